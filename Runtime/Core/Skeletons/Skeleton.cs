@@ -1,0 +1,146 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// An immutable joint hierarchy: names, parents and rest (bind) local transforms, in Unity's frame.
+    /// Joints are ordered so that every parent comes before its children, which lets forward kinematics
+    /// run as one pass. End points (a BVH <c>End Site</c>, a finger tip) are joints flagged as end sites.
+    /// </summary>
+    public sealed class Skeleton
+    {
+        private readonly string[] _names;
+        private readonly int[] _parents;
+        private readonly Pose[] _restLocal;
+        private readonly bool[] _isEndSite;
+        private readonly Dictionary<string, int> _indexByName;
+
+        /// <summary>
+        /// Creates a skeleton. <paramref name="parents"/>[i] is the index of joint i's parent, or -1 for a root,
+        /// and must be smaller than i.
+        /// </summary>
+        /// <exception cref="ArgumentException">The arrays differ in length, a parent does not precede its child,
+        /// a name is empty or used twice, or a rest pose is not finite.</exception>
+        public Skeleton(IReadOnlyList<string> names, IReadOnlyList<int> parents, IReadOnlyList<Pose> restLocal,
+            IReadOnlyList<bool> isEndSite = null)
+        {
+            if (names == null) throw new ArgumentNullException(nameof(names));
+            if (parents == null) throw new ArgumentNullException(nameof(parents));
+            if (restLocal == null) throw new ArgumentNullException(nameof(restLocal));
+            int n = names.Count;
+            if (n == 0) throw new ArgumentException("A skeleton needs at least one joint.", nameof(names));
+            if (parents.Count != n || restLocal.Count != n || (isEndSite != null && isEndSite.Count != n))
+                throw new ArgumentException("names, parents, rest poses and end-site flags must have the same length.");
+
+            _names = new string[n];
+            _parents = new int[n];
+            _restLocal = new Pose[n];
+            _isEndSite = new bool[n];
+            _indexByName = new Dictionary<string, int>(n, StringComparer.Ordinal);
+            for (int i = 0; i < n; i++)
+            {
+                string name = names[i];
+                if (string.IsNullOrEmpty(name)) throw new ArgumentException($"Joint {i} has no name.", nameof(names));
+                if (_indexByName.ContainsKey(name)) throw new ArgumentException($"Joint name '{name}' is used twice.", nameof(names));
+                int parent = parents[i];
+                if (parent < -1 || parent >= i)
+                    throw new ArgumentException($"Joint '{name}' (index {i}) has parent {parent}; a parent must come before its child.", nameof(parents));
+                if (!Vectors.IsFinite(restLocal[i].Position) || !Rotations.IsFinite(restLocal[i].Rotation))
+                    throw new ArgumentException($"Joint '{name}' has a non-finite rest pose.", nameof(restLocal));
+                _names[i] = name;
+                _parents[i] = parent;
+                _restLocal[i] = new Pose(restLocal[i].Position, Rotations.NormalizeOr(restLocal[i].Rotation, Quaternion.Identity));
+                _isEndSite[i] = isEndSite != null && isEndSite[i];
+                _indexByName.Add(name, i);
+            }
+        }
+
+        /// <summary>The number of joints, end sites included.</summary>
+        public int JointCount => _names.Length;
+
+        /// <summary>The joint names, in hierarchy order.</summary>
+        public IReadOnlyList<string> Names => _names;
+
+        /// <summary>The name of joint <paramref name="joint"/>.</summary>
+        public string GetName(int joint) => _names[joint];
+
+        /// <summary>The parent index of joint <paramref name="joint"/>, or -1 for a root.</summary>
+        public int GetParent(int joint) => _parents[joint];
+
+        /// <summary>The rest (bind) transform of joint <paramref name="joint"/> relative to its parent.</summary>
+        public Pose GetRestLocal(int joint) => _restLocal[joint];
+
+        /// <summary>True when the joint is an end point with no rotation of its own (a BVH End Site).</summary>
+        public bool IsEndSite(int joint) => _isEndSite[joint];
+
+        /// <summary>The index of the joint with this exact name, or -1.</summary>
+        public int IndexOf(string name) => name != null && _indexByName.TryGetValue(name, out int i) ? i : -1;
+
+        /// <summary>True when <paramref name="ancestor"/> is <paramref name="joint"/> or one of its ancestors.</summary>
+        public bool IsAncestorOrSelf(int ancestor, int joint)
+        {
+            for (int j = joint; j >= 0; j = _parents[j])
+                if (j == ancestor) return true;
+            return false;
+        }
+
+        /// <summary>Copies the rest local transforms into <paramref name="local"/>.</summary>
+        public void GetRestLocal(Span<Pose> local)
+        {
+            CheckLength(local.Length);
+            _restLocal.AsSpan().CopyTo(local);
+        }
+
+        /// <summary>
+        /// Forward kinematics: world transforms from local ones, the roots placed under <paramref name="origin"/>.
+        /// Allocation-free.
+        /// </summary>
+        public void ComputeWorld(ReadOnlySpan<Pose> local, Span<Pose> world, Pose origin)
+        {
+            CheckLength(local.Length);
+            CheckLength(world.Length);
+            for (int i = 0; i < _parents.Length; i++)
+            {
+                int parent = _parents[i];
+                world[i] = (parent < 0 ? origin : world[parent]) * local[i];
+            }
+        }
+
+        /// <summary>Forward kinematics with the roots at the world origin.</summary>
+        public void ComputeWorld(ReadOnlySpan<Pose> local, Span<Pose> world) => ComputeWorld(local, world, Pose.Identity);
+
+        /// <summary>
+        /// Inverse of <see cref="ComputeWorld(ReadOnlySpan{Pose}, Span{Pose}, Pose)"/>: local transforms from world ones.
+        /// </summary>
+        public void ComputeLocal(ReadOnlySpan<Pose> world, Span<Pose> local, Pose origin)
+        {
+            CheckLength(local.Length);
+            CheckLength(world.Length);
+            for (int i = 0; i < _parents.Length; i++)
+            {
+                int parent = _parents[i];
+                local[i] = world[i].RelativeTo(parent < 0 ? origin : world[parent]);
+            }
+        }
+
+        /// <summary>A copy of this skeleton with every rest translation multiplied by <paramref name="scale"/>.</summary>
+        public Skeleton Scaled(float scale)
+        {
+            if (!(scale > 0f) || !Vectors.IsFinite(scale)) throw new ArgumentOutOfRangeException(nameof(scale), scale, "Scale must be positive and finite.");
+            var rest = new Pose[_restLocal.Length];
+            for (int i = 0; i < rest.Length; i++) rest[i] = _restLocal[i].Scaled(scale);
+            return new Skeleton(_names, _parents, rest, _isEndSite);
+        }
+
+        /// <summary>A copy of this skeleton with other rest local transforms (same names and hierarchy).</summary>
+        public Skeleton WithRestLocal(IReadOnlyList<Pose> restLocal) => new Skeleton(_names, _parents, restLocal, _isEndSite);
+
+        private void CheckLength(int length)
+        {
+            if (length != _names.Length)
+                throw new ArgumentException($"Expected a buffer of {_names.Length} joints, got {length}.");
+        }
+    }
+}

@@ -1,0 +1,55 @@
+using System;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// A reusable pose buffer for one <see cref="Skeleton"/>: local transforms that a solver writes and
+    /// world transforms computed from them. Allocated once; every per-frame operation is allocation-free.
+    /// </summary>
+    public sealed class SkeletonPose
+    {
+        /// <summary>The skeleton this pose belongs to.</summary>
+        public Skeleton Skeleton { get; }
+
+        /// <summary>Local transforms, one per joint, relative to the parent (roots: relative to <see cref="Origin"/>).</summary>
+        public Pose[] Local { get; }
+
+        /// <summary>World transforms, valid after <see cref="UpdateWorld"/>.</summary>
+        public Pose[] World { get; }
+
+        /// <summary>The frame the roots are expressed in (identity: world).</summary>
+        public Pose Origin { get; set; } = Pose.Identity;
+
+        /// <summary>Creates a pose buffer set to the skeleton's rest pose.</summary>
+        public SkeletonPose(Skeleton skeleton)
+        {
+            Skeleton = skeleton ?? throw new ArgumentNullException(nameof(skeleton));
+            Local = new Pose[skeleton.JointCount];
+            World = new Pose[skeleton.JointCount];
+            ResetToRest();
+        }
+
+        /// <summary>Sets every local transform to the rest pose and updates the world transforms.</summary>
+        public void ResetToRest()
+        {
+            Skeleton.GetRestLocal(Local);
+            UpdateWorld();
+        }
+
+        /// <summary>Recomputes <see cref="World"/> from <see cref="Local"/> (forward kinematics).</summary>
+        public void UpdateWorld() => Skeleton.ComputeWorld(Local, World, Origin);
+
+        /// <summary>Recomputes <see cref="Local"/> from <see cref="World"/>.</summary>
+        public void UpdateLocal() => Skeleton.ComputeLocal(World, Local, Origin);
+
+        /// <summary>Copies another pose of the same skeleton into this one.</summary>
+        public void CopyFrom(SkeletonPose other)
+        {
+            if (other == null) throw new ArgumentNullException(nameof(other));
+            if (other.Skeleton.JointCount != Skeleton.JointCount) throw new ArgumentException("The poses belong to different skeletons.", nameof(other));
+            Array.Copy(other.Local, Local, Local.Length);
+            Array.Copy(other.World, World, World.Length);
+            Origin = other.Origin;
+        }
+    }
+}

@@ -1,0 +1,86 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+
+namespace AvatarGo.Cli;
+
+/// <summary>
+/// Minimal option parser: positional arguments plus `--name value` and `--flag` options. Every option
+/// a command accepts must be read; <see cref="ThrowOnUnknown"/> rejects the rest.
+/// </summary>
+public sealed class ArgReader
+{
+    private readonly List<string> _positional = new();
+    private readonly Dictionary<string, string> _options = new(StringComparer.Ordinal);
+    private readonly HashSet<string> _read = new(StringComparer.Ordinal);
+
+    public ArgReader(string[] args, params string[] flagNames)
+    {
+        var flags = new HashSet<string>(flagNames, StringComparer.Ordinal);
+        for (int i = 0; i < args.Length; i++)
+        {
+            string a = args[i];
+            if (a.StartsWith("--", StringComparison.Ordinal) && a.Length > 2)
+            {
+                string name = a.Substring(2);
+                string value = "true";
+                int eq = name.IndexOf('=');
+                if (eq >= 0) { value = name.Substring(eq + 1); name = name.Substring(0, eq); }
+                else if (!flags.Contains(name))
+                {
+                    if (i + 1 >= args.Length) throw new UsageException($"option --{name} needs a value");
+                    value = args[++i];
+                }
+                _options[name] = value;
+            }
+            else _positional.Add(a);
+        }
+    }
+
+    public IReadOnlyList<string> Positional => _positional;
+
+    public string Positional0(string what)
+    {
+        if (_positional.Count == 0) throw new UsageException($"missing {what}");
+        return _positional[0];
+    }
+
+    public bool Flag(string name)
+    {
+        _read.Add(name);
+        return _options.TryGetValue(name, out string v) && v != "false";
+    }
+
+    public string String(string name, string fallback = null)
+    {
+        _read.Add(name);
+        return _options.TryGetValue(name, out string v) ? v : fallback;
+    }
+
+    public double Double(string name, double fallback)
+    {
+        _read.Add(name);
+        if (!_options.TryGetValue(name, out string v)) return fallback;
+        if (!double.TryParse(v, NumberStyles.Float, CultureInfo.InvariantCulture, out double d) || double.IsNaN(d) || double.IsInfinity(d))
+            throw new UsageException($"--{name} expects a number, got '{v}'");
+        return d;
+    }
+
+    public int Int(string name, int fallback)
+    {
+        _read.Add(name);
+        if (!_options.TryGetValue(name, out string v)) return fallback;
+        if (!int.TryParse(v, NumberStyles.Integer, CultureInfo.InvariantCulture, out int n))
+            throw new UsageException($"--{name} expects an integer, got '{v}'");
+        return n;
+    }
+
+    /// <summary>Call after reading every option: rejects options the command does not know.</summary>
+    public void ThrowOnUnknown(int maxPositional)
+    {
+        foreach (string name in _options.Keys)
+            if (!_read.Contains(name)) throw new UsageException($"unknown option --{name}");
+        if (_positional.Count > maxPositional)
+            throw new UsageException($"unexpected argument '{_positional[maxPositional]}'");
+    }
+}
