@@ -1,0 +1,273 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// A BVH motion: the joint hierarchy with its channels and the raw channel values of every frame, as read
+    /// from a file (right-handed, file units) or created from poses. Poses come out in Unity's frame:
+    /// positions (x, y, z) → (-x, y, z) times <see cref="Scale"/>, rotations (x, y, z, w) → (x, -y, -z, w).
+    /// </summary>
+    /// <remarks>
+    /// Channel semantics: rotation channels compose in the order listed, <c>R = R(c1) R(c2) R(c3)</c>
+    /// (intrinsic), about BVH's right-handed axes, in degrees. A joint with position channels takes those
+    /// values as its translation from the parent, component by component, in place of its OFFSET (the usual
+    /// reading, and the one Blender's exporter relies on); a joint without them is translated by its OFFSET.
+    /// End Sites are joints with no channels, named <c>&lt;parent&gt;_End</c> (made unique if needed).
+    /// </remarks>
+    public sealed class BvhClip
+    {
+        private readonly Vector3[] _fileOffsets;
+        private readonly BvhChannel[][] _channels;
+        private readonly int[] _channelStart;
+        private readonly float[] _values;
+
+        /// <summary>Creates a clip from its parts (used by <see cref="BvhReader"/> and <see cref="FromPoses"/>).</summary>
+        /// <param name="names">Joint names in file order (End Sites included).</param>
+        /// <param name="parents">Parent index of each joint (-1 for the root), parents first.</param>
+        /// <param name="isEndSite">True for End Site joints.</param>
+        /// <param name="fileOffsets">OFFSET of each joint, in the file's frame and units.</param>
+        /// <param name="channels">Channels of each joint (empty for End Sites).</param>
+        /// <param name="frameCount">Number of frames.</param>
+        /// <param name="frameTime">Seconds per frame, positive.</param>
+        /// <param name="values">frameCount × total channels values, frame-major.</param>
+        /// <param name="scale">Length factor applied when poses are produced.</param>
+        public BvhClip(IReadOnlyList<string> names, IReadOnlyList<int> parents, IReadOnlyList<bool> isEndSite,
+            IReadOnlyList<Vector3> fileOffsets, IReadOnlyList<BvhChannel[]> channels, int frameCount, float frameTime,
+            float[] values, float scale)
+        {
+            if (names == null) throw new ArgumentNullException(nameof(names));
+            int n = names.Count;
+            if (fileOffsets == null || fileOffsets.Count != n || channels == null || channels.Count != n)
+                throw new ArgumentException("Offsets and channels must be given for every joint.");
+            if (!(frameTime > 0f) || float.IsInfinity(frameTime)) throw new ArgumentOutOfRangeException(nameof(frameTime), frameTime, "Frame time must be positive.");
+            if (!(scale > 0f) || float.IsInfinity(scale)) throw new ArgumentOutOfRangeException(nameof(scale), scale, "Scale must be positive.");
+            if (frameCount < 0) throw new ArgumentOutOfRangeException(nameof(frameCount));
+
+            _fileOffsets = new Vector3[n];
+            _channels = new BvhChannel[n][];
+            _channelStart = new int[n];
+            int total = 0;
+            for (int i = 0; i < n; i++)
+            {
+                _fileOffsets[i] = fileOffsets[i];
+                _channels[i] = channels[i] ?? Array.Empty<BvhChannel>();
+                _channelStart[i] = total;
+                total += _channels[i].Length;
+            }
+            ChannelCount = total;
+            if (values == null || values.Length != (long)frameCount * total)
+                throw new ArgumentException($"Expected {(long)frameCount * total} channel values, got {values?.Length ?? 0}.", nameof(values));
+            _values = values;
+            FrameCount = frameCount;
+            FrameTime = frameTime;
+            Scale = scale;
+
+            var rest = new Pose[n];
+            for (int i = 0; i < n; i++) rest[i] = new Pose(ToUnity(_fileOffsets[i]) * scale, Quaternion.Identity);
+            Skeleton = new Skeleton(names, parents, rest, isEndSite);
+        }
+
+        /// <summary>The joint hierarchy in Unity's frame, scaled; rest pose = the OFFSETs with no rotation.</summary>
+        public Skeleton Skeleton { get; }
+
+        /// <summary>The number of frames.</summary>
+        public int FrameCount { get; }
+
+        /// <summary>Seconds per frame.</summary>
+        public float FrameTime { get; }
+
+        /// <summary>Frames per second (1 / <see cref="FrameTime"/>).</summary>
+        public float FrameRate => 1f / FrameTime;
+
+        /// <summary>The length factor applied to the file's lengths when poses are produced.</summary>
+        public float Scale { get; }
+
+        /// <summary>The number of channels per frame.</summary>
+        public int ChannelCount { get; }
+
+        /// <summary>The channels of a joint, in file order (empty for End Sites).</summary>
+        public IReadOnlyList<BvhChannel> GetChannels(int joint) => _channels[joint];
+
+        /// <summary>The joint's OFFSET as written in the file (BVH frame, file units).</summary>
+        public Vector3 GetFileOffset(int joint) => _fileOffsets[joint];
+
+        /// <summary>The raw value of channel <paramref name="channel"/> (0 … <see cref="ChannelCount"/>-1) in a frame.</summary>
+        public float GetValue(int frame, int channel) => _values[(long)frame * ChannelCount + channel];
+
+        /// <summary>The same clip with another length factor (values are shared, not copied).</summary>
+        public BvhClip WithScale(float scale)
+        {
+            var channels = new BvhChannel[_channels.Length][];
+            Array.Copy(_channels, channels, channels.Length);
+            var parents = new int[Skeleton.JointCount];
+            var endSites = new bool[Skeleton.JointCount];
+            for (int i = 0; i < parents.Length; i++)
+            {
+                parents[i] = Skeleton.GetParent(i);
+                endSites[i] = Skeleton.IsEndSite(i);
+            }
+            return new BvhClip(Skeleton.Names, parents, endSites, _fileOffsets, channels, FrameCount, FrameTime, _values, scale);
+        }
+
+        /// <summary>
+        /// The local pose of every joint in a frame, in Unity's frame and scaled. Allocation-free.
+        /// </summary>
+        public void GetLocalPoses(int frame, Span<Pose> local)
+        {
+            if ((uint)frame >= (uint)FrameCount) throw new ArgumentOutOfRangeException(nameof(frame), frame, $"The clip has {FrameCount} frames.");
+            if (local.Length != _channels.Length) throw new ArgumentException($"Expected {_channels.Length} poses, got {local.Length}.", nameof(local));
+            int row = frame * ChannelCount;
+            for (int j = 0; j < _channels.Length; j++)
+            {
+                Vector3 t = _fileOffsets[j];
+                Quaternion q = Quaternion.Identity;
+                BvhChannel[] channels = _channels[j];
+                int start = row + _channelStart[j];
+                for (int c = 0; c < channels.Length; c++)
+                {
+                    float v = _values[start + c];
+                    switch (channels[c])
+                    {
+                        case BvhChannel.Xposition: t.X = v; break;
+                        case BvhChannel.Yposition: t.Y = v; break;
+                        case BvhChannel.Zposition: t.Z = v; break;
+                        case BvhChannel.Xrotation: q *= AxisRotation(0, v); break;
+                        case BvhChannel.Yrotation: q *= AxisRotation(1, v); break;
+                        default: q *= AxisRotation(2, v); break;
+                    }
+                }
+                local[j] = new Pose(ToUnity(t) * Scale, ToUnity(Quaternion.Normalize(q)));
+            }
+        }
+
+        /// <summary>The world pose of every joint in a frame (Unity's frame, scaled). Allocation-free.</summary>
+        public void GetWorldPoses(int frame, Span<Pose> local, Span<Pose> world)
+        {
+            GetLocalPoses(frame, local);
+            Skeleton.ComputeWorld(local, world);
+        }
+
+        /// <summary>
+        /// The height of the rest skeleton (highest minus lowest joint, End Sites included) in file units,
+        /// and from it the guessed metres per file unit: under 3 units tall → metres (1), under 300 →
+        /// centimetres (0.01), otherwise millimetres (0.001). A standing human is 1–2.2 m tall.
+        /// </summary>
+        public float GuessMetresPerUnit()
+        {
+            var rest = new Pose[Skeleton.JointCount];
+            for (int i = 0; i < rest.Length; i++) rest[i] = new Pose(_fileOffsets[i], Quaternion.Identity);
+            var world = new Pose[rest.Length];
+            Skeleton.ComputeWorld(rest, world);
+            float min = float.MaxValue, max = float.MinValue;
+            foreach (Pose p in world)
+            {
+                min = Math.Min(min, p.Position.Y);
+                max = Math.Max(max, p.Position.Y);
+            }
+            float height = max - min;
+            if (height < 3f) return 1f;
+            if (height < 300f) return 0.01f;
+            return 0.001f;
+        }
+
+        /// <summary>
+        /// Creates a clip from local poses of <paramref name="skeleton"/> (Unity's frame, metres), for writing:
+        /// roots get 6 channels (Xposition Yposition Zposition Zrotation Xrotation Yrotation), other joints 3
+        /// rotation channels, End Sites none. Lengths are divided by <paramref name="metresPerUnit"/>.
+        /// </summary>
+        public static BvhClip FromPoses(Skeleton skeleton, IReadOnlyList<Pose[]> localFrames, float frameTime, float metresPerUnit = 1f)
+        {
+            if (skeleton == null) throw new ArgumentNullException(nameof(skeleton));
+            if (localFrames == null) throw new ArgumentNullException(nameof(localFrames));
+            int n = skeleton.JointCount;
+            var parents = new int[n];
+            var endSites = new bool[n];
+            var offsets = new Vector3[n];
+            var channels = new BvhChannel[n][];
+            int total = 0;
+            for (int j = 0; j < n; j++)
+            {
+                parents[j] = skeleton.GetParent(j);
+                endSites[j] = skeleton.IsEndSite(j);
+                offsets[j] = ToUnity(skeleton.GetRestLocal(j).Position) / metresPerUnit;
+                channels[j] = endSites[j] ? Array.Empty<BvhChannel>()
+                    : parents[j] < 0 ? new[] { BvhChannel.Xposition, BvhChannel.Yposition, BvhChannel.Zposition, BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation }
+                    : new[] { BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation };
+                total += channels[j].Length;
+            }
+            var values = new float[localFrames.Count * total];
+            int k = 0;
+            for (int f = 0; f < localFrames.Count; f++)
+            {
+                Pose[] frame = localFrames[f];
+                if (frame == null || frame.Length != n) throw new ArgumentException($"Frame {f} does not have {n} poses.", nameof(localFrames));
+                for (int j = 0; j < n; j++)
+                {
+                    if (endSites[j]) continue;
+                    if (parents[j] < 0)
+                    {
+                        Vector3 p = ToUnity(frame[j].Position) / metresPerUnit; // the mirror is its own inverse
+                        values[k++] = p.X; values[k++] = p.Y; values[k++] = p.Z;
+                    }
+                    Vector3 euler = EulerDegrees(ToUnity(frame[j].Rotation), 2, 0, 1); // ZXY
+                    values[k++] = euler.X; values[k++] = euler.Y; values[k++] = euler.Z;
+                }
+            }
+            return new BvhClip(skeleton.Names, parents, endSites, offsets, channels, localFrames.Count, frameTime, values, metresPerUnit);
+        }
+
+        /// <summary>
+        /// Decomposes a right-handed rotation into Euler angles (degrees) for axes i, j, k (0 = X, 1 = Y, 2 = Z,
+        /// all different) such that <c>q = R_i(a) R_j(b) R_k(c)</c>; returns (a, b, c).
+        /// </summary>
+        internal static Vector3 EulerDegrees(Quaternion q, int i, int j, int k)
+        {
+            double[,] m = Matrix(q);
+            // +1 when (i, j, k) is an even permutation of (X, Y, Z).
+            double s = ((j - i + 3) % 3 == 1) ? 1.0 : -1.0;
+            double sb = Math.Max(-1.0, Math.Min(1.0, s * m[i, k]));
+            // atan2 rather than asin: asin loses half the digits near ±90°.
+            double cb = Math.Sqrt(m[i, i] * m[i, i] + m[i, j] * m[i, j]);
+            double a, b = Math.Atan2(sb, cb), c;
+            if (cb > 1e-6)
+            {
+                a = Math.Atan2(-s * m[j, k], m[k, k]);
+                c = Math.Atan2(-s * m[i, j], m[i, i]);
+            }
+            else
+            {
+                // Gimbal lock: only a + c (or a - c) is defined; put it all in a.
+                c = 0.0;
+                a = Math.Atan2(s * m[k, j], m[j, j]);
+            }
+            const double toDeg = 180.0 / Math.PI;
+            return new Vector3((float)(a * toDeg), (float)(b * toDeg), (float)(c * toDeg));
+        }
+
+        private static double[,] Matrix(Quaternion q)
+        {
+            double x = q.X, y = q.Y, z = q.Z, w = q.W;
+            return new double[,]
+            {
+                { 1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w) },
+                { 2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w) },
+                { 2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y) },
+            };
+        }
+
+        private static Quaternion AxisRotation(int axis, float degrees)
+        {
+            double half = degrees * (Math.PI / 360.0);
+            float s = (float)Math.Sin(half), c = (float)Math.Cos(half);
+            return axis == 0 ? new Quaternion(s, 0, 0, c) : axis == 1 ? new Quaternion(0, s, 0, c) : new Quaternion(0, 0, s, c);
+        }
+
+        /// <summary>BVH (right-handed) ↔ Unity (left-handed): mirror X. Its own inverse.</summary>
+        internal static Vector3 ToUnity(Vector3 v) => new Vector3(-v.X, v.Y, v.Z);
+
+        /// <summary>BVH (right-handed) ↔ Unity (left-handed) rotation under the X mirror. Its own inverse.</summary>
+        internal static Quaternion ToUnity(Quaternion q) => new Quaternion(q.X, -q.Y, -q.Z, q.W);
+    }
+}

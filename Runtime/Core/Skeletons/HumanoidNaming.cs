@@ -1,0 +1,221 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// Finds the humanoid bones of a skeleton from its joint names and hierarchy. Recognises Mixamo
+    /// (<c>mixamorig:LeftUpLeg</c>, any <c>prefix:</c>), Ubisoft/LaFAN (<c>LeftUpLeg</c>, <c>LeftLeg</c>,
+    /// <c>LeftToe</c>, <c>Spine1</c>), CMU/MocapBank (<c>Chest</c>, <c>LeftCollar</c>, <c>LeftShoulder</c> = upper
+    /// arm, <c>LeftElbow</c>, <c>LeftWrist</c>, <c>LeftHip</c>, <c>LeftKnee</c>, <c>LeftAnkle</c>), Rigify
+    /// (<c>pelvis</c>, <c>spine.001</c>, <c>upper_arm.L</c>, <c>thigh.L</c>, <c>shin.L</c>, <c>f_index.01.L</c>) and
+    /// Unity-style names (<c>LeftUpperArm</c>, <c>LeftLowerLeg</c>). Explicit overrides win.
+    /// </summary>
+    /// <remarks>
+    /// Rules worth knowing: <c>Shoulder</c> is the clavicle when the same side also has an <c>Arm</c>/<c>UpperArm</c>
+    /// joint, otherwise (CMU, with a <c>Collar</c>) the upper arm. The spine chain is the unsided joints between
+    /// the hips and the neck: the first is Spine, the second Chest, the third UpperChest. When a rig has no hand
+    /// (or foot, or head) joint, the End Site that ends the forearm (shin, neck) plays it, so that every required
+    /// bone is found on rigs like Rigify exports whose forearm ends in an End Site.
+    /// </remarks>
+    public static class HumanoidNaming
+    {
+        private enum Side { None, Left, Right }
+
+        /// <summary>
+        /// Detects the humanoid map of <paramref name="skeleton"/>. <paramref name="overrides"/> (joint name → bone)
+        /// are applied first and win over detection. Bones that cannot be found are left unmapped; check
+        /// <see cref="HumanoidMap.MissingRequired"/>.
+        /// </summary>
+        /// <exception cref="ArgumentException">An override names a joint the skeleton does not have.</exception>
+        public static HumanoidMap Detect(Skeleton skeleton, IReadOnlyDictionary<string, HumanBone> overrides = null)
+        {
+            if (skeleton == null) throw new ArgumentNullException(nameof(skeleton));
+            int n = skeleton.JointCount;
+            var sides = new Side[n];
+            var cores = new string[n];
+            for (int j = 0; j < n; j++) Normalise(skeleton.GetName(j), out sides[j], out cores[j]);
+
+            var bones = new Dictionary<HumanBone, int>();
+            var used = new HashSet<int>();
+            if (overrides != null)
+            {
+                foreach (var pair in overrides)
+                {
+                    int joint = skeleton.IndexOf(pair.Key);
+                    if (joint < 0) throw new ArgumentException($"Override names joint '{pair.Key}', which the skeleton does not have.", nameof(overrides));
+                    bones[pair.Value] = joint;
+                    used.Add(joint);
+                }
+            }
+
+            void Put(HumanBone bone, int joint)
+            {
+                if (joint < 0 || bones.ContainsKey(bone) || used.Contains(joint)) return;
+                bones[bone] = joint;
+                used.Add(joint);
+            }
+
+            // Hips: an unsided hips/pelvis joint, else the first root with children.
+            int hips = Find(skeleton, cores, sides, Side.None, -1, "hips", "pelvis", "hip");
+            if (hips < 0) hips = 0;
+            Put(HumanBone.Hips, hips);
+            hips = bones.TryGetValue(HumanBone.Hips, out int h) ? h : hips;
+
+            foreach (Side side in new[] { Side.Left, Side.Right })
+            {
+                bool left = side == Side.Left;
+                // Legs.
+                int upLeg = Find(skeleton, cores, sides, side, hips, "upleg", "upperleg", "thigh", "hip", "femur");
+                int lowLeg = Find(skeleton, cores, sides, side, upLeg, "leg", "lowerleg", "shin", "knee", "calf", "tibia");
+                int foot = Find(skeleton, cores, sides, side, lowLeg, "foot", "ankle");
+                int toes = Find(skeleton, cores, sides, side, foot, "toebase", "toe", "toes", "ball");
+                if (foot < 0) foot = EndSiteOf(skeleton, lowLeg);
+                Put(left ? HumanBone.LeftUpperLeg : HumanBone.RightUpperLeg, upLeg);
+                Put(left ? HumanBone.LeftLowerLeg : HumanBone.RightLowerLeg, lowLeg);
+                Put(left ? HumanBone.LeftFoot : HumanBone.RightFoot, foot);
+                if (toes >= 0 && !skeleton.IsEndSite(toes)) Put(left ? HumanBone.LeftToes : HumanBone.RightToes, toes);
+
+                // Arms: is "shoulder" the clavicle or the upper arm on this side?
+                bool hasArm = FindAnywhere(cores, sides, side, "arm", "upperarm", "uparm") >= 0;
+                int clavicle = hasArm
+                    ? Find(skeleton, cores, sides, side, hips, "shoulder", "clavicle", "collar")
+                    : Find(skeleton, cores, sides, side, hips, "clavicle", "collar");
+                int upArm = hasArm
+                    ? Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "arm", "upperarm", "uparm")
+                    : Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "shoulder", "humerus");
+                int foreArm = Find(skeleton, cores, sides, side, upArm, "forearm", "lowerarm", "elbow", "radius");
+                int hand = Find(skeleton, cores, sides, side, foreArm, "hand", "wrist");
+                if (hand < 0) hand = EndSiteOf(skeleton, foreArm);
+                Put(left ? HumanBone.LeftShoulder : HumanBone.RightShoulder, clavicle);
+                Put(left ? HumanBone.LeftUpperArm : HumanBone.RightUpperArm, upArm);
+                Put(left ? HumanBone.LeftLowerArm : HumanBone.RightLowerArm, foreArm);
+                Put(left ? HumanBone.LeftHand : HumanBone.RightHand, hand);
+
+                // Fingers: three phalanges per finger, below the hand.
+                if (hand >= 0 && !skeleton.IsEndSite(hand))
+                {
+                    string[][] fingerNames =
+                    {
+                        new[] { "thumb" }, new[] { "index" }, new[] { "middle" }, new[] { "ring" }, new[] { "pinky", "little" },
+                    };
+                    for (int f = 0; f < 5; f++)
+                    {
+                        int parent = hand;
+                        for (int phalanx = 0; phalanx < 3; phalanx++)
+                        {
+                            int joint = FindFinger(skeleton, cores, sides, side, parent, fingerNames[f], phalanx + 1);
+                            if (joint < 0) break;
+                            Put(HumanBones.Finger(left, f, phalanx), joint);
+                            parent = joint;
+                        }
+                    }
+                }
+
+                int eye = Find(skeleton, cores, sides, side, hips, "eye");
+                if (eye >= 0 && !skeleton.IsEndSite(eye)) Put(left ? HumanBone.LeftEye : HumanBone.RightEye, eye);
+            }
+
+            // Neck and head.
+            int neck = Find(skeleton, cores, sides, Side.None, hips, "neck", "neck1");
+            int head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "head");
+            if (head < 0) head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "face");
+            if (head < 0 && neck >= 0) head = EndSiteOf(skeleton, neck);
+            Put(HumanBone.Neck, neck);
+            Put(HumanBone.Head, head);
+            int jaw = Find(skeleton, cores, sides, Side.None, head, "jaw");
+            if (jaw >= 0 && !skeleton.IsEndSite(jaw)) Put(HumanBone.Jaw, jaw);
+
+            // Spine chain: unsided joints strictly between the hips and the neck (or the arms' attachment).
+            int top = neck >= 0 ? skeleton.GetParent(neck)
+                : bones.TryGetValue(HumanBone.LeftUpperArm, out int la) ? skeleton.GetParent(la) : -1;
+            if (bones.TryGetValue(HumanBone.LeftShoulder, out int ls)) top = CommonAncestor(skeleton, top, skeleton.GetParent(ls));
+            var chain = new List<int>();
+            for (int j = top; j >= 0 && j != hips; j = skeleton.GetParent(j))
+                if (!used.Contains(j) && sides[j] == Side.None && !skeleton.IsEndSite(j)) chain.Insert(0, j);
+            if (chain.Count > 0 && skeleton.IsAncestorOrSelf(hips, chain[0]))
+            {
+                Put(HumanBone.Spine, chain[0]);
+                if (chain.Count > 1) Put(HumanBone.Chest, chain[1]);
+                if (chain.Count > 2) Put(HumanBone.UpperChest, chain[chain.Count - 1]);
+            }
+
+            var pairs = new List<KeyValuePair<HumanBone, string>>();
+            foreach (var pair in bones) pairs.Add(new KeyValuePair<HumanBone, string>(pair.Key, skeleton.GetName(pair.Value)));
+            return new HumanoidMap(skeleton, pairs);
+        }
+
+        private static int CommonAncestor(Skeleton s, int a, int b)
+        {
+            if (a < 0) return b;
+            if (b < 0) return a;
+            for (int x = a; x >= 0; x = s.GetParent(x))
+                if (s.IsAncestorOrSelf(x, b)) return x;
+            return -1;
+        }
+
+        private static int EndSiteOf(Skeleton s, int joint)
+        {
+            if (joint < 0) return -1;
+            for (int j = joint + 1; j < s.JointCount; j++)
+                if (s.GetParent(j) == joint && s.IsEndSite(j)) return j;
+            return -1;
+        }
+
+        // The first joint (in hierarchy order) below `under` (any depth; anywhere when under is -1) on the
+        // given side whose core name equals one of the keys, trying keys in order of preference.
+        private static int Find(Skeleton s, string[] cores, Side[] sides, Side side, int under, params string[] keys)
+        {
+            foreach (string key in keys)
+                for (int j = 0; j < cores.Length; j++)
+                    if (sides[j] == side && cores[j] == key && !s.IsEndSite(j) && (under < 0 || (j != under && s.IsAncestorOrSelf(under, j))))
+                        return j;
+            return -1;
+        }
+
+        private static int FindAnywhere(string[] cores, Side[] sides, Side side, params string[] keys)
+        {
+            foreach (string key in keys)
+                for (int j = 0; j < cores.Length; j++)
+                    if (sides[j] == side && cores[j] == key) return j;
+            return -1;
+        }
+
+        private static int FindFinger(Skeleton s, string[] cores, Side[] sides, Side side, int under, string[] fingers, int number)
+        {
+            string n1 = number.ToString(CultureInfo.InvariantCulture);
+            string n2 = "0" + n1;
+            foreach (string finger in fingers)
+                for (int j = 0; j < cores.Length; j++)
+                {
+                    if (sides[j] != side || s.IsEndSite(j) || !s.IsAncestorOrSelf(under, j) || j == under) continue;
+                    string c = cores[j];
+                    if (c.StartsWith("hand", StringComparison.Ordinal)) c = c.Substring(4);
+                    if (c.StartsWith("f", StringComparison.Ordinal) && !c.StartsWith("finger", StringComparison.Ordinal)) c = c.Substring(1); // rigify f_index
+                    if (c == finger + n1 || c == finger + n2) return j;
+                }
+            return -1;
+        }
+
+        // Strips a namespace ("mixamorig:"), finds the side (Left/Right prefix, L_/R_ prefix, .L/_L/.R/_R suffix)
+        // and reduces the rest to lower-case letters and digits.
+        private static void Normalise(string name, out Side side, out string core)
+        {
+            int colon = name.LastIndexOf(':');
+            string s = colon >= 0 ? name.Substring(colon + 1) : name;
+            string lower = s.ToLowerInvariant();
+            side = Side.None;
+            if (lower.StartsWith("left", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(4); }
+            else if (lower.StartsWith("right", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(5); }
+            else if (lower.StartsWith("l_", StringComparison.Ordinal) || lower.StartsWith("l.", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(2); }
+            else if (lower.StartsWith("r_", StringComparison.Ordinal) || lower.StartsWith("r.", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(2); }
+            else if (lower.EndsWith(".l", StringComparison.Ordinal) || lower.EndsWith("_l", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(0, lower.Length - 2); }
+            else if (lower.EndsWith(".r", StringComparison.Ordinal) || lower.EndsWith("_r", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(0, lower.Length - 2); }
+            var chars = new System.Text.StringBuilder(lower.Length);
+            foreach (char c in lower)
+                if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) chars.Append(c);
+            core = chars.ToString();
+        }
+    }
+}

@@ -1,0 +1,203 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Numerics;
+using System.Text;
+using NUnit.Framework;
+
+namespace AvatarGo.Core.Tests
+{
+    public class BvhReaderTests
+    {
+        // The shared clips as their README describes them: file, frames, frame rate.
+        [TestCase("mocapbank_30fps.bvh", 455, 30f)]
+        [TestCase("mixamo_fingers_30fps.bvh", 69, 30f)]
+        [TestCase("rigify_6channel_24fps.bvh", 3089, 24f)]
+        public void SharedClipsLoadWithTheirHumanoidMapping(string file, int frames, float rate)
+        {
+            BvhClip clip = BvhReader.ReadFile(TestData.SharedMocap(file));
+            Assert.That(clip.FrameCount, Is.EqualTo(frames));
+            Assert.That(clip.FrameRate, Is.EqualTo(rate).Within(0.01f));
+            HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
+            Assert.That(map.MissingRequired(), Is.Empty, file);
+        }
+
+        [Test]
+        public void MocapBankMapsCmuStyleNames()
+        {
+            HumanoidMap map = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.SharedMocap("mocapbank_30fps.bvh")).Skeleton);
+            Assert.That(map.NameOf(HumanBone.LeftShoulder), Is.EqualTo("LeftCollar"));
+            Assert.That(map.NameOf(HumanBone.LeftUpperArm), Is.EqualTo("LeftShoulder"));
+            Assert.That(map.NameOf(HumanBone.LeftLowerArm), Is.EqualTo("LeftElbow"));
+            Assert.That(map.NameOf(HumanBone.LeftHand), Is.EqualTo("LeftWrist"));
+            Assert.That(map.NameOf(HumanBone.RightUpperLeg), Is.EqualTo("RightHip"));
+            Assert.That(map.NameOf(HumanBone.RightFoot), Is.EqualTo("RightAnkle"));
+            Assert.That(map.NameOf(HumanBone.Spine), Is.EqualTo("Chest"));
+            Assert.That(map.NameOf(HumanBone.Chest), Is.EqualTo("Chest2"));
+        }
+
+        [Test]
+        public void MixamoMapsEveryFingerAndRigifyUsesEndSitesForHands()
+        {
+            HumanoidMap mixamo = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.SharedMocap("mixamo_fingers_30fps.bvh")).Skeleton);
+            for (int f = 0; f < 5; f++)
+            for (int p = 0; p < 3; p++)
+            {
+                Assert.That(mixamo.Has(HumanBones.Finger(true, f, p)), Is.True, HumanBones.Finger(true, f, p).ToString());
+                Assert.That(mixamo.Has(HumanBones.Finger(false, f, p)), Is.True, HumanBones.Finger(false, f, p).ToString());
+            }
+            Assert.That(mixamo.NameOf(HumanBone.LeftShoulder), Is.EqualTo("mixamorig:LeftShoulder"));
+            Assert.That(mixamo.NameOf(HumanBone.LeftUpperArm), Is.EqualTo("mixamorig:LeftArm"));
+            Assert.That(mixamo.NameOf(HumanBone.UpperChest), Is.EqualTo("mixamorig:Spine2"));
+
+            HumanoidMap rigify = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.SharedMocap("rigify_6channel_24fps.bvh")).Skeleton);
+            Assert.That(rigify.NameOf(HumanBone.Hips), Is.EqualTo("pelvis"));
+            Assert.That(rigify.NameOf(HumanBone.LeftUpperLeg), Is.EqualTo("thigh.L"));
+            Assert.That(rigify.NameOf(HumanBone.LeftHand), Is.EqualTo("forearm.L_End"));
+            Assert.That(rigify.NameOf(HumanBone.Head), Is.EqualTo("face"));
+        }
+
+        [Test]
+        public void OverridesWinOverDetection()
+        {
+            Skeleton s = BvhReader.ReadFile(TestData.SharedMocap("mocapbank_30fps.bvh")).Skeleton;
+            var map = HumanoidNaming.Detect(s, new Dictionary<string, HumanBone> { { "Chest2", HumanBone.UpperChest } });
+            Assert.That(map.NameOf(HumanBone.UpperChest), Is.EqualTo("Chest2"));
+            Assert.That(map.NameOf(HumanBone.Chest), Is.Not.EqualTo("Chest2"));
+            Assert.Throws<ArgumentException>(() => HumanoidNaming.Detect(s, new Dictionary<string, HumanBone> { { "Nope", HumanBone.Jaw } }));
+        }
+
+        [TestCase("Hips", "LeftUpLeg", "LeftLeg", "LeftFoot", "LeftToe", "Spine", "Spine1", "Spine2", "Neck", "Head", "LeftShoulder", "LeftArm", "LeftForeArm", "LeftHand")]
+        [TestCase("Hips", "LeftUpperLeg", "LeftLowerLeg", "LeftFoot", "LeftToes", "Spine", "Chest", "UpperChest", "Neck", "Head", "LeftShoulder", "LeftUpperArm", "LeftLowerArm", "LeftHand")]
+        [TestCase("pelvis", "thigh.L", "shin.L", "foot.L", "toe.L", "spine", "spine.001", "spine.002", "neck", "head", "shoulder.L", "upper_arm.L", "forearm.L", "hand.L")]
+        public void SyntheticSkeletonsInEachConvention(string hips, string upLeg, string leg, string foot, string toe, string spine, string chest, string upperChest,
+            string neck, string head, string clavicle, string upperArm, string foreArm, string hand)
+        {
+            string Right(string n) => n.StartsWith("Left") ? "Right" + n.Substring(4) : n.EndsWith(".L") ? n.Substring(0, n.Length - 2) + ".R" : n;
+            var names = new List<string>();
+            var parents = new List<int>();
+            int Add(string n, int p) { names.Add(n); parents.Add(p); return names.Count - 1; }
+            int h = Add(hips, -1);
+            foreach (bool left in new[] { true, false })
+            {
+                Func<string, string> side = n => left ? n : Right(n);
+                int a = Add(side(upLeg), h); a = Add(side(leg), a); a = Add(side(foot), a); Add(side(toe), a);
+            }
+            int s1 = Add(spine, h), s2 = Add(chest, s1), s3 = Add(upperChest, s2);
+            int nk = Add(neck, s3); Add(head, nk);
+            foreach (bool left in new[] { true, false })
+            {
+                Func<string, string> side = n => left ? n : Right(n);
+                int a = Add(side(clavicle), s3); a = Add(side(upperArm), a); a = Add(side(foreArm), a); Add(side(hand), a);
+            }
+            var rest = new Pose[names.Count];
+            for (int i = 0; i < rest.Length; i++) rest[i] = new Pose(new Vector3(0, 0.1f, 0), Quaternion.Identity);
+            HumanoidMap map = HumanoidNaming.Detect(new Skeleton(names, parents, rest));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Assert.That(map.NameOf(HumanBone.LeftShoulder), Is.EqualTo(clavicle));
+            Assert.That(map.NameOf(HumanBone.RightUpperArm), Is.EqualTo(Right(upperArm)));
+            Assert.That(map.NameOf(HumanBone.RightLowerLeg), Is.EqualTo(Right(leg)));
+            Assert.That(map.NameOf(HumanBone.LeftToes), Is.EqualTo(toe));
+            Assert.That(map.NameOf(HumanBone.Chest), Is.EqualTo(chest));
+            Assert.That(map.NameOf(HumanBone.UpperChest), Is.EqualTo(upperChest));
+            Assert.That(map.NameOf(HumanBone.Head), Is.EqualTo(head));
+        }
+
+        [Test]
+        public void WriteThenReadRoundTrips()
+        {
+            foreach (string file in new[] { "mocapbank_30fps.bvh", "mixamo_fingers_30fps.bvh", "rigify_6channel_24fps.bvh" })
+            {
+                BvhClip a = BvhReader.ReadFile(TestData.SharedMocap(file));
+                var text = new StringWriter();
+                BvhWriter.Write(text, a);
+                BvhClip b = BvhReader.Read(new StringReader(text.ToString()), "written");
+                Assert.That(b.Skeleton.Names, Is.EqualTo(a.Skeleton.Names));
+                Assert.That(b.ChannelCount, Is.EqualTo(a.ChannelCount));
+                Assert.That(b.FrameCount, Is.EqualTo(a.FrameCount));
+                for (int f = 0; f < a.FrameCount; f += 7)
+                for (int c = 0; c < a.ChannelCount; c++)
+                    Assert.That(b.GetValue(f, c), Is.EqualTo(a.GetValue(f, c)), $"{file} frame {f} channel {c}");
+            }
+        }
+
+        [Test]
+        public void PosesWrittenAsEulerRoundTripThroughEveryAxisOrder()
+        {
+            // FromPoses decomposes rotations into ZXY Euler angles; reading back must give the same world joints.
+            BvhClip clip = BvhReader.ReadFile(TestData.SharedMocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            var frames = new List<Pose[]>();
+            for (int f = 0; f < clip.FrameCount; f++)
+            {
+                var local = new Pose[clip.Skeleton.JointCount];
+                clip.GetLocalPoses(f, local);
+                frames.Add(local);
+            }
+            BvhClip written = BvhClip.FromPoses(clip.Skeleton, frames, clip.FrameTime, 0.01f);
+            var sw = new StringWriter();
+            BvhWriter.Write(sw, written);
+            BvhClip back = BvhReader.Read(new StringReader(sw.ToString()), "euler", new BvhReadOptions { Scale = 0.01f });
+            var l1 = new Pose[clip.Skeleton.JointCount]; var w1 = new Pose[l1.Length];
+            var l2 = new Pose[l1.Length]; var w2 = new Pose[l1.Length];
+            for (int f = 0; f < clip.FrameCount; f++)
+            {
+                clip.GetWorldPoses(f, l1, w1);
+                back.GetWorldPoses(f, l2, w2);
+                for (int j = 0; j < l1.Length; j++)
+                {
+                    // 0.05 mm: float Euler angles of ~1e-5° over a 2 m chain.
+                    Approx.Near(w1[j].Position, w2[j].Position, 5e-5f, $"frame {f} {clip.Skeleton.GetName(j)}");
+                    Approx.Near(w1[j].Rotation, w2[j].Rotation, 0.01f, $"frame {f} {clip.Skeleton.GetName(j)}");
+                }
+            }
+        }
+
+        [TestCase(0, 0, 0)]
+        [TestCase(2, 0, 1)]
+        [TestCase(0, 1, 2)]
+        [TestCase(2, 1, 0)]
+        [TestCase(1, 0, 2)]
+        [TestCase(1, 2, 0)]
+        public void EulerDecompositionRecomposes(int i, int j, int k)
+        {
+            if (i == j) { i = 0; j = 2; k = 1; }
+            var rng = new Random(i * 9 + j * 3 + k);
+            Vector3[] axes = { Vector3.UnitX, Vector3.UnitY, Vector3.UnitZ };
+            for (int n = 0; n < 500; n++)
+            {
+                Quaternion q = Rotations.AngleAxis((float)rng.NextDouble() * 360f,
+                    new Vector3((float)rng.NextDouble() - .5f, (float)rng.NextDouble() - .5f, (float)rng.NextDouble() - .5f));
+                if (n == 0) q = Rotations.AngleAxis(90f, axes[j]); // gimbal lock
+                Vector3 e = BvhClip.EulerDegrees(q, i, j, k);
+                Quaternion r = Rotations.AngleAxis(e.X, axes[i]) * Rotations.AngleAxis(e.Y, axes[j]) * Rotations.AngleAxis(e.Z, axes[k]);
+                Approx.Near(q, r, 0.01f);
+            }
+        }
+
+        [Test]
+        public void CrlfTabsAndLfReadTheSame()
+        {
+            string original = File.ReadAllText(TestData.SharedMocap("mocapbank_30fps.bvh"));
+            string lf = original.Replace("\r\n", "\n");
+            string tabs = lf.Replace("  ", "\t");
+            BvhClip a = BvhReader.Read(new StringReader(original), "crlf");
+            BvhClip b = BvhReader.Read(new StringReader(lf), "lf");
+            BvhClip c = BvhReader.Read(new StringReader(tabs), "tabs");
+            Assert.That(b.ChannelCount, Is.EqualTo(a.ChannelCount));
+            Assert.That(c.Skeleton.Names, Is.EqualTo(a.Skeleton.Names));
+            for (int ch = 0; ch < a.ChannelCount; ch++)
+            {
+                Assert.That(b.GetValue(a.FrameCount - 1, ch), Is.EqualTo(a.GetValue(a.FrameCount - 1, ch)));
+                Assert.That(c.GetValue(a.FrameCount - 1, ch), Is.EqualTo(a.GetValue(a.FrameCount - 1, ch)));
+            }
+        }
+
+        [Test]
+        public void GuessesUnits()
+        {
+            Assert.That(BvhReader.ReadFile(TestData.SharedMocap("mocapbank_30fps.bvh")).GuessMetresPerUnit(), Is.EqualTo(0.01f));
+            Assert.That(BvhReader.ReadFile(TestData.SharedMocap("mixamo_fingers_30fps.bvh")).GuessMetresPerUnit(), Is.EqualTo(0.01f));
+            Assert.That(BvhReader.ReadFile(TestData.SharedMocap("rigify_6channel_24fps.bvh")).GuessMetresPerUnit(), Is.EqualTo(1f));
+        }
+    }
+}
