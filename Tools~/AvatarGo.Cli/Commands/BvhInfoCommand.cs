@@ -1,0 +1,49 @@
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using AvatarGo.Core;
+
+namespace AvatarGo.Cli.Commands;
+
+/// <summary>`avatargo bvh info FILE`: joints, frames, rate, humanoid mapping and missing required bones.</summary>
+public sealed class BvhInfoCommand : ICommand
+{
+    public string Name => "bvh info";
+    public string Summary => "Joints, frame count, rate and humanoid mapping of a BVH file";
+    public string Help => """
+        avatargo bvh info FILE
+
+        Prints the joints of a BVH file (with their channels), its frame count, frame rate and
+        duration, the guessed length unit, the humanoid bone found for each joint, and the required
+        humanoid bones that could not be found (none for a usable rig).
+        Exit codes: 0 ok, 1 unreadable or malformed file (one-line message), 2 bad arguments.
+        """;
+
+    public int Run(string[] args, TextWriter stdout, TextWriter stderr)
+    {
+        var a = new ArgReader(args);
+        string path = a.Positional0("FILE");
+        a.ThrowOnUnknown(1);
+        BvhClip clip = BvhReader.ReadFile(path);
+        HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
+        Skeleton s = clip.Skeleton;
+        var inv = CultureInfo.InvariantCulture;
+        float unit = clip.GuessMetresPerUnit();
+        stdout.WriteLine($"file: {Path.GetFileName(path)}");
+        stdout.WriteLine($"frames: {clip.FrameCount}");
+        stdout.WriteLine(string.Create(inv, $"rate: {clip.FrameRate:0.###} Hz (frame time {clip.FrameTime:0.######} s), duration {clip.FrameCount * clip.FrameTime:0.###} s"));
+        stdout.WriteLine($"units: {(unit == 1f ? "metres" : unit == 0.01f ? "centimetres" : "millimetres")} (guessed from the rest skeleton's height)");
+        stdout.WriteLine($"joints: {s.Names.Count(n => !s.IsEndSite(s.IndexOf(n)))} (+{s.Names.Count(n => s.IsEndSite(s.IndexOf(n)))} end sites), channels per frame: {clip.ChannelCount}");
+        for (int j = 0; j < s.JointCount; j++)
+        {
+            int depth = 0;
+            for (int p = s.GetParent(j); p >= 0; p = s.GetParent(p)) depth++;
+            HumanBone bone = map.BoneOf(j);
+            string channels = s.IsEndSite(j) ? "end site" : string.Join(" ", clip.GetChannels(j));
+            stdout.WriteLine($"  {new string(' ', depth * 2)}{s.GetName(j)}  [{channels}]{(bone != HumanBone.LastBone ? "  -> " + bone : "")}");
+        }
+        var missing = map.MissingRequired();
+        stdout.WriteLine($"humanoid: {map.Count} bones mapped; missing required: {(missing.Count == 0 ? "none" : string.Join(", ", missing))}");
+        return 0;
+    }
+}

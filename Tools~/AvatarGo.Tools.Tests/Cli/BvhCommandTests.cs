@@ -1,0 +1,179 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+
+namespace AvatarGo.Tools.Tests;
+
+public class BvhCommandTests
+{
+    [TestCase("mocapbank_30fps.bvh", 0.01)]
+    [TestCase("mixamo_fingers_30fps.bvh", 1.0)]
+    [TestCase("rigify_6channel_24fps.bvh", 1000.0)]
+    public void PositionsAgreeWithAnIndependentForwardKinematics(string file, double scale)
+    {
+        string path = Paths.SharedMocap(file);
+        var r = CliRunner.Run("bvh", "positions", path, "--scale", scale.ToString(CultureInfo.InvariantCulture));
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
+        string[] rows = r.Stdout.TrimEnd().Split('\n');
+        double[][] truth = ReferenceFk.Positions(path, scale);
+        Assert.That(rows.Length - 1, Is.EqualTo(truth.Length), "one row per frame");
+        // 0.1 mm, in the output's units: file units × scale; metres-per-output-unit as the clip's unit over scale.
+        double metresPerFileUnit = file.StartsWith("rigify") ? 1.0 : 0.01;
+        double tolerance = 1e-4 / metresPerFileUnit * scale;
+        double worst = 0;
+        for (int f = 0; f < truth.Length; f++)
+        {
+            double[] got = rows[f + 1].Split(',').Skip(1).Select(s => double.Parse(s, CultureInfo.InvariantCulture)).ToArray();
+            Assert.That(got.Length, Is.EqualTo(truth[f].Length), $"frame {f} columns");
+            for (int i = 0; i < got.Length; i += 3)
+            {
+                // Unity's frame is the BVH frame with x negated.
+                double dx = got[i] + truth[f][i], dy = got[i + 1] - truth[f][i + 1], dz = got[i + 2] - truth[f][i + 2];
+                worst = Math.Max(worst, Math.Sqrt(dx * dx + dy * dy + dz * dz));
+            }
+        }
+        Assert.That(worst, Is.LessThanOrEqualTo(tolerance), $"largest joint distance from the reference FK");
+    }
+
+    [Test]
+    public void FramesOptionSelectsARange()
+    {
+        var r = CliRunner.Run("bvh", "positions", Paths.SharedMocap("mocapbank_30fps.bvh"), "--frames", "10:13");
+        Assert.That(r.ExitCode, Is.EqualTo(0));
+        string[] rows = r.Stdout.TrimEnd().Split('\n');
+        Assert.That(rows.Length, Is.EqualTo(4));
+        StringAssert.StartsWith("10,", rows[1]);
+        StringAssert.StartsWith("12,", rows[3]);
+        Assert.That(CliRunner.Run("bvh", "positions", Paths.SharedMocap("mocapbank_30fps.bvh"), "--frames", "5:999").ExitCode, Is.EqualTo(2));
+    }
+
+    [Test]
+    public void InfoShowsMappingAndNoMissingBones()
+    {
+        var r = CliRunner.Run("bvh", "info", Paths.SharedMocap("mocapbank_30fps.bvh"));
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
+        StringAssert.Contains("frames: 455", r.Stdout);
+        StringAssert.Contains("LeftElbow  [Zrotation Xrotation Yrotation]  -> LeftLowerArm", r.Stdout);
+        StringAssert.Contains("missing required: none", r.Stdout);
+    }
+
+    [Test]
+    public void BrokenFileIsAOneLineErrorWithExitCode1()
+    {
+        string text = File.ReadAllText(Paths.SharedMocap("mocapbank_30fps.bvh"));
+        string path = Path.Combine(Path.GetTempPath(), "avatargo-broken-" + Guid.NewGuid().ToString("N") + ".bvh");
+        File.WriteAllText(path, text.Substring(0, text.Length / 2));
+        try
+        {
+            foreach (string cmd in new[] { "info", "positions" })
+            {
+                var r = CliRunner.Run("bvh", cmd, path);
+                Assert.That(r.ExitCode, Is.EqualTo(1));
+                Assert.That(r.Stderr.TrimEnd().Split('\n').Length, Is.EqualTo(1), r.Stderr);
+                StringAssert.Contains(".bvh:", r.Stderr);
+            }
+            Assert.That(CliRunner.Run("bvh", "info", path + ".missing").ExitCode, Is.EqualTo(1));
+        }
+        finally { File.Delete(path); }
+    }
+
+    /// <summary>
+    /// Reference forward kinematics written independently of the package: double precision, 4×4
+    /// column-vector matrices in BVH's own right-handed frame, the simplest possible parse.
+    /// </summary>
+    private static class ReferenceFk
+    {
+        public static double[][] Positions(string path, double scale)
+        {
+            string[] tokens = File.ReadAllText(path).Split((char[])null, StringSplitOptions.RemoveEmptyEntries);
+            var joints = new List<(int parent, double[] offset, string[] channels, bool end)>();
+            var stack = new Stack<int>();
+            int i = 0, pending = -1;
+            bool pendingEnd = false;
+            while (tokens[i] != "MOTION")
+            {
+                string t = tokens[i++];
+                if (t == "ROOT" || t == "JOINT") { pending = joints.Count; pendingEnd = false; i++; }
+                else if (t == "End") { pending = joints.Count; pendingEnd = true; i++; }
+                else if (t == "{")
+                {
+                    joints.Add((stack.Count > 0 ? stack.Peek() : -1, new double[3], new string[0], pendingEnd));
+                    stack.Push(pending);
+                }
+                else if (t == "}") stack.Pop();
+                else if (t == "OFFSET")
+                {
+                    var j = joints[stack.Peek()];
+                    for (int k = 0; k < 3; k++) j.offset[k] = double.Parse(tokens[i++], CultureInfo.InvariantCulture);
+                }
+                else if (t == "CHANNELS")
+                {
+                    int n = int.Parse(tokens[i++], CultureInfo.InvariantCulture);
+                    var j = joints[stack.Peek()];
+                    joints[stack.Peek()] = (j.parent, j.offset, tokens.Skip(i).Take(n).ToArray(), j.end);
+                    i += n;
+                }
+            }
+            i++; // MOTION
+            i++; int frames = int.Parse(tokens[i++], CultureInfo.InvariantCulture); // Frames: N
+            i += 2; i++; // Frame Time: t
+            var result = new double[frames][];
+            int outputs = joints.Count(j => !j.end);
+            for (int f = 0; f < frames; f++)
+            {
+                var world = new double[joints.Count][,];
+                result[f] = new double[outputs * 3];
+                int o = 0;
+                for (int j = 0; j < joints.Count; j++)
+                {
+                    var (parent, offset, channels, end) = joints[j];
+                    double[] t = (double[])offset.Clone();
+                    double[,] m = Identity();
+                    foreach (string c in channels)
+                    {
+                        double v = double.Parse(tokens[i++], CultureInfo.InvariantCulture);
+                        switch (c)
+                        {
+                            case "Xposition": t[0] = v; break;
+                            case "Yposition": t[1] = v; break;
+                            case "Zposition": t[2] = v; break;
+                            default: m = Mul(m, Rot(c[0], v)); break;
+                        }
+                    }
+                    m[0, 3] = t[0] * scale; m[1, 3] = t[1] * scale; m[2, 3] = t[2] * scale;
+                    world[j] = parent < 0 ? m : Mul(world[parent], m);
+                    if (!end)
+                    {
+                        result[f][o++] = world[j][0, 3]; result[f][o++] = world[j][1, 3]; result[f][o++] = world[j][2, 3];
+                    }
+                }
+            }
+            return result;
+        }
+
+        private static double[,] Identity() => new double[,] { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 }, { 0, 0, 0, 1 } };
+
+        private static double[,] Rot(char axis, double degrees)
+        {
+            double a = degrees * Math.PI / 180, c = Math.Cos(a), s = Math.Sin(a);
+            return axis switch
+            {
+                'X' => new double[,] { { 1, 0, 0, 0 }, { 0, c, -s, 0 }, { 0, s, c, 0 }, { 0, 0, 0, 1 } },
+                'Y' => new double[,] { { c, 0, s, 0 }, { 0, 1, 0, 0 }, { -s, 0, c, 0 }, { 0, 0, 0, 1 } },
+                _ => new double[,] { { c, -s, 0, 0 }, { s, c, 0, 0 }, { 0, 0, 1, 0 }, { 0, 0, 0, 1 } },
+            };
+        }
+
+        private static double[,] Mul(double[,] a, double[,] b)
+        {
+            var r = new double[4, 4];
+            for (int x = 0; x < 4; x++)
+                for (int y = 0; y < 4; y++)
+                    for (int k = 0; k < 4; k++) r[x, y] += a[x, k] * b[k, y];
+            return r;
+        }
+    }
+}
