@@ -1,0 +1,377 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// Reads a session (format v1) as a stream: the header is read and checked on construction, then
+    /// <see cref="ReadFrame"/> fills a reused <see cref="SessionFrame"/> one frame at a time. Any malformed,
+    /// truncated or unknown-version content throws a <see cref="FormatException"/> naming the source, the
+    /// 1-based line and the problem. See Documentation~/session-format.md.
+    /// </summary>
+    public sealed class SessionReader : IDisposable
+    {
+        private const int MaxTokens = 16;
+        private readonly TextReader _reader;
+        private readonly bool _ownsReader;
+        private readonly string _source;
+        private readonly int[] _starts = new int[MaxTokens];
+        private readonly int[] _lengths = new int[MaxTokens];
+        private readonly bool[] _seen;
+        private string _line;
+        private int _tokenCount;
+        private int _lineNumber;
+        private string _pending;
+        private int _pendingNumber;
+        private double _lastTime = double.NegativeInfinity;
+        private bool _ended;
+        private readonly int _minor;
+
+        /// <summary>Reads and validates the header from <paramref name="reader"/>.</summary>
+        /// <param name="reader">The text.</param>
+        /// <param name="sourceName">Names the source in error messages.</param>
+        /// <param name="ownsReader">Dispose <paramref name="reader"/> with this reader.</param>
+        /// <exception cref="FormatException">The header is missing, malformed or of an unknown major version.</exception>
+        public SessionReader(TextReader reader, string sourceName, bool ownsReader = false)
+        {
+            _reader = reader ?? throw new ArgumentNullException(nameof(reader));
+            _source = sourceName ?? "session";
+            _ownsReader = ownsReader;
+            Header = ReadHeader(out _minor);
+            _seen = new bool[Header.Devices.Count];
+        }
+
+        /// <summary>Opens a session file and reads its header.</summary>
+        public static SessionReader Open(string path) =>
+            new SessionReader(new StreamReader(path, System.Text.Encoding.UTF8, true, 1 << 16), Path.GetFileName(path), ownsReader: true);
+
+        /// <summary>The session header.</summary>
+        public SessionHeader Header { get; }
+
+        /// <summary>The number of frames read so far.</summary>
+        public int FrameCount { get; private set; }
+
+        /// <summary>A frame buffer sized for this session's header.</summary>
+        public SessionFrame CreateFrame() => new SessionFrame(Header);
+
+        /// <summary>
+        /// Reads the next frame into <paramref name="frame"/>; false at the end of the session (after the
+        /// end line has been checked against the frame count).
+        /// </summary>
+        /// <exception cref="FormatException">The frame is malformed, or the file ends without its end line (truncated).</exception>
+        public bool ReadFrame(SessionFrame frame)
+        {
+            if (frame == null) throw new ArgumentNullException(nameof(frame));
+            if (frame.Samples.Length != Header.Devices.Count) throw new ArgumentException("The frame was made for another header.", nameof(frame));
+            if (_ended) return false;
+            if (!NextLine()) throw Error(_lineNumber + 1, $"the file ends after {FrameCount} frames without its 'end' line (truncated?)");
+            if (Is(0, "end"))
+            {
+                Expect(2, "end FRAME_COUNT");
+                int declared = Int(1);
+                if (declared != FrameCount) throw Error(_lineNumber, $"'end {declared}' but the file has {FrameCount} frames");
+                _ended = true;
+                if (NextLine()) throw Error(_lineNumber, "content after the 'end' line");
+                return false;
+            }
+            if (!Is(0, "frame")) throw Error(_lineNumber, $"expected 'frame' or 'end', found '{Token(0).ToString()}'");
+            Expect(2, "frame TIME");
+            frame.Clear();
+            int frameLine = _lineNumber;
+            double time = Double(1);
+            if (time < _lastTime) throw Error(_lineNumber, $"time {time.ToString("R", CultureInfo.InvariantCulture)} goes back before {_lastTime.ToString("R", CultureInfo.InvariantCulture)}");
+            _lastTime = time;
+            frame.Time = time;
+            Array.Clear(_seen, 0, _seen.Length);
+
+            while (NextLine())
+            {
+                if (Is(0, "frame") || Is(0, "end"))
+                {
+                    Unread();
+                    break;
+                }
+                if (Is(0, "pose"))
+                {
+                    Expect(10, "pose ID tracked|lost PX PY PZ QX QY QZ QW");
+                    int index = Device(1);
+                    if (_seen[index]) throw Error(_lineNumber, $"device {Header.Devices[index].Id} has two poses in one frame");
+                    _seen[index] = true;
+                    bool tracked;
+                    if (Is(2, "tracked")) tracked = true;
+                    else if (Is(2, "lost")) tracked = false;
+                    else throw Error(_lineNumber, $"expected 'tracked' or 'lost', found '{Token(2).ToString()}'");
+                    Pose p = ReadPose(3, tracked);
+                    frame.Samples[index] = new DeviceSample(p, tracked);
+                }
+                else if (Is(0, "input"))
+                {
+                    Expect(4, "input ID TRIGGER GRIP");
+                    int index = Device(1);
+                    frame.Trigger[index] = Analog(2);
+                    frame.Grip[index] = Analog(3);
+                }
+                else if (Is(0, "event"))
+                {
+                    Expect(3, "event ID KIND");
+                    int index = Device(1);
+                    if (!SessionText.TryEvent(Token(2), out InputEventKind kind)) throw Error(_lineNumber, $"unknown event '{Token(2).ToString()}'");
+                    frame.Events.Add(new InputEvent(Header.Devices[index].Id, kind));
+                }
+                else if (Is(0, "truth"))
+                {
+                    Expect(9, "truth BONE PX PY PZ QX QY QZ QW");
+                    if (!TryBone(Token(1), out HumanBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Token(1).ToString()}'");
+                    frame.Truth[(int)bone] = ReadPose(2, true);
+                    frame.HasTruth[(int)bone] = true;
+                }
+                else if (_minor > SessionHeader.FormatVersion.Minor) continue; // a newer minor version's line: skipped
+                else throw Error(_lineNumber, $"unknown line '{Token(0).ToString()}' in a frame");
+            }
+            for (int i = 0; i < _seen.Length; i++)
+                if (!_seen[i]) throw Error(_pending != null ? _pendingNumber : _lineNumber + 1, $"the frame at line {frameLine} has no pose for device {Header.Devices[i].Id}{(_pending == null ? " (truncated?)" : "")}");
+            FrameCount++;
+            return true;
+        }
+
+        /// <summary>Releases the reader if owned.</summary>
+        public void Dispose()
+        {
+            if (_ownsReader) _reader.Dispose();
+        }
+
+        private SessionHeader ReadHeader(out int minor)
+        {
+            if (!NextLine()) throw Error(1, "the file is empty; expected 'avatargo-session 1.0'");
+            if (!Is(0, SessionText.Magic)) throw Error(_lineNumber, $"not an AvatarGo session: expected '{SessionText.Magic} 1.0', found '{Token(0).ToString()}'");
+            Expect(2, SessionText.Magic + " VERSION");
+            ReadOnlySpan<char> v = Token(1);
+            int dot = v.IndexOf('.');
+            if (dot < 0 || !int.TryParse(v.Slice(0, dot).ToString(), NumberStyles.None, CultureInfo.InvariantCulture, out int major)
+                || !int.TryParse(v.Slice(dot + 1).ToString(), NumberStyles.None, CultureInfo.InvariantCulture, out minor))
+                throw Error(_lineNumber, $"version '{v.ToString()}' is not MAJOR.MINOR");
+            if (major != SessionHeader.FormatVersion.Major)
+                throw Error(_lineNumber, $"format version {v.ToString()} is not supported (this reader reads {SessionHeader.FormatVersion.Major}.x)");
+
+            float rate = float.NaN;
+            bool units = false, handedness = false;
+            var devices = new List<DeviceInfo>();
+            var trueRoles = new Dictionary<int, DeviceRole>();
+            var names = new List<string>();
+            var parents = new List<int>();
+            var rest = new List<Pose>();
+            var endSites = new List<bool>();
+            var bones = new List<KeyValuePair<HumanBone, string>>();
+            while (true)
+            {
+                if (!NextLine()) throw Error(_lineNumber + 1, "the file ends inside the header (no 'end-header')");
+                if (Is(0, "end-header")) break;
+                if (Is(0, "units"))
+                {
+                    Expect(3, "units m s");
+                    if (!Is(1, "m") || !Is(2, "s")) throw Error(_lineNumber, "only 'units m s' (metres, seconds) is defined");
+                    units = true;
+                }
+                else if (Is(0, "handedness"))
+                {
+                    Expect(4, "handedness left y-up z-forward");
+                    if (!Is(1, "left") || !Is(2, "y-up") || !Is(3, "z-forward")) throw Error(_lineNumber, "only 'handedness left y-up z-forward' (Unity's frame) is defined");
+                    handedness = true;
+                }
+                else if (Is(0, "rate"))
+                {
+                    Expect(2, "rate HZ");
+                    rate = (float)Double(1);
+                    if (!(rate > 0f)) throw Error(_lineNumber, "the rate must be positive");
+                }
+                else if (Is(0, "device"))
+                {
+                    Expect(5, "device ID CLASS SERIAL ROLE");
+                    int id = Int(1);
+                    if (id < 0) throw Error(_lineNumber, "device ids are non-negative");
+                    foreach (DeviceInfo d in devices) if (d.Id == id) throw Error(_lineNumber, $"device id {id} is used twice");
+                    if (!SessionText.TryClass(Token(2), out DeviceClass c)) throw Error(_lineNumber, $"unknown device class '{Token(2).ToString()}' (hmd, controller, tracker)");
+                    if (!SessionText.TryRole(Token(4), out DeviceRole role)) throw Error(_lineNumber, $"unknown role '{Token(4).ToString()}'");
+                    string serial = Token(3).ToString();
+                    devices.Add(new DeviceInfo(id, c, serial == "-" ? "" : serial, role));
+                }
+                else if (Is(0, "truth-role"))
+                {
+                    Expect(3, "truth-role ID ROLE");
+                    int id = Int(1);
+                    if (!SessionText.TryRole(Token(2), out DeviceRole role)) throw Error(_lineNumber, $"unknown role '{Token(2).ToString()}'");
+                    trueRoles[id] = role;
+                }
+                else if (Is(0, "truth-joint"))
+                {
+                    Expect(13, "truth-joint INDEX PARENT BONE joint|end NAME PX PY PZ QX QY QZ QW");
+                    if (Int(1) != names.Count) throw Error(_lineNumber, $"joint index {Int(1)} out of order (expected {names.Count})");
+                    int parent = Int(2);
+                    if (parent < -1 || parent >= names.Count) throw Error(_lineNumber, $"parent {parent} must be -1 or an earlier joint");
+                    string name = Token(5).ToString();
+                    if (names.Contains(name)) throw Error(_lineNumber, $"joint name '{name}' is used twice");
+                    bool end;
+                    if (Is(4, "end")) end = true;
+                    else if (Is(4, "joint")) end = false;
+                    else throw Error(_lineNumber, $"expected 'joint' or 'end', found '{Token(4).ToString()}'");
+                    if (!Is(3, "-"))
+                    {
+                        if (!TryBone(Token(3), out HumanBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Token(3).ToString()}'");
+                        foreach (var pair in bones) if (pair.Key == bone) throw Error(_lineNumber, $"bone {bone} is mapped twice");
+                        bones.Add(new KeyValuePair<HumanBone, string>(bone, name));
+                    }
+                    names.Add(name);
+                    parents.Add(parent);
+                    endSites.Add(end);
+                    rest.Add(ReadPose(6, true));
+                }
+                else if (minor > SessionHeader.FormatVersion.Minor) continue;
+                else throw Error(_lineNumber, $"unknown header line '{Token(0).ToString()}'");
+            }
+            if (!units) throw Error(_lineNumber, "the header has no 'units' line");
+            if (!handedness) throw Error(_lineNumber, "the header has no 'handedness' line");
+            if (float.IsNaN(rate)) throw Error(_lineNumber, "the header has no 'rate' line");
+            if (devices.Count == 0) throw Error(_lineNumber, "the header lists no devices");
+
+            DeviceRole[] roles = null;
+            if (trueRoles.Count > 0)
+            {
+                roles = new DeviceRole[devices.Count];
+                for (int i = 0; i < devices.Count; i++)
+                    if (!trueRoles.TryGetValue(devices[i].Id, out roles[i])) throw Error(_lineNumber, $"device {devices[i].Id} has no truth-role while others do");
+                foreach (int id in trueRoles.Keys)
+                {
+                    bool known = false;
+                    foreach (DeviceInfo d in devices) known |= d.Id == id;
+                    if (!known) throw Error(_lineNumber, $"truth-role names unknown device {id}");
+                }
+            }
+            HumanoidMap truth = null;
+            if (names.Count > 0) truth = new HumanoidMap(new Skeleton(names, parents, rest, endSites), bones);
+            return new SessionHeader(rate, devices, roles, truth);
+        }
+
+        private Pose ReadPose(int first, bool mustBeValid)
+        {
+            var position = new Vector3(Float(first), Float(first + 1), Float(first + 2));
+            var rotation = new Quaternion(Float(first + 3), Float(first + 4), Float(first + 5), Float(first + 6));
+            float length = rotation.Length();
+            if (mustBeValid && Math.Abs(length - 1f) > 1e-3f)
+                throw Error(_lineNumber, $"rotation ({rotation.X}, {rotation.Y}, {rotation.Z}, {rotation.W}) is not a unit quaternion");
+            return new Pose(position, length > 1e-6f ? Quaternion.Multiply(rotation, 1f / length) : Quaternion.Identity);
+        }
+
+        private float Analog(int i)
+        {
+            if (Is(i, "-")) return float.NaN;
+            float v = Float(i);
+            if (v < 0f || v > 1f) throw Error(_lineNumber, $"analog value {v.ToString(CultureInfo.InvariantCulture)} is outside 0..1");
+            return v;
+        }
+
+        private int Device(int i)
+        {
+            int id = Int(i);
+            int index = Header.IndexOf(id);
+            if (index < 0) throw Error(_lineNumber, $"unknown device id {id}");
+            return index;
+        }
+
+        private static readonly string[] BoneNames = BuildBoneNames();
+
+        private static string[] BuildBoneNames()
+        {
+            var names = new string[HumanBones.Count];
+            for (int b = 0; b < names.Length; b++) names[b] = ((HumanBone)b).ToString();
+            return names;
+        }
+
+        private static bool TryBone(ReadOnlySpan<char> s, out HumanBone bone)
+        {
+            for (int b = 0; b < BoneNames.Length; b++)
+                if (s.SequenceEqual(BoneNames[b].AsSpan())) { bone = (HumanBone)b; return true; }
+            bone = HumanBone.LastBone;
+            return false;
+        }
+
+        private bool NextLine()
+        {
+            if (_pending != null)
+            {
+                _line = _pending;
+                _lineNumber = _pendingNumber;
+                _pending = null;
+                Tokenise();
+                return true;
+            }
+            while (true)
+            {
+                string line = _reader.ReadLine();
+                if (line == null) return false;
+                _lineNumber++;
+                _line = line;
+                Tokenise();
+                if (_tokenCount > 0 && _line[_starts[0]] != '#') return true;
+            }
+        }
+
+        private void Unread()
+        {
+            _pending = _line;
+            _pendingNumber = _lineNumber;
+        }
+
+        private void Tokenise()
+        {
+            _tokenCount = 0;
+            int pos = 0;
+            string s = _line;
+            while (pos < s.Length)
+            {
+                while (pos < s.Length && char.IsWhiteSpace(s[pos])) pos++;
+                if (pos >= s.Length) break;
+                int start = pos;
+                while (pos < s.Length && !char.IsWhiteSpace(s[pos])) pos++;
+                if (_tokenCount == MaxTokens) { _tokenCount++; return; }
+                _starts[_tokenCount] = start;
+                _lengths[_tokenCount] = pos - start;
+                _tokenCount++;
+            }
+        }
+
+        private void Expect(int count, string form)
+        {
+            if (_tokenCount != count) throw Error(_lineNumber, $"expected '{form}' ({count} fields), found {Math.Min(_tokenCount, MaxTokens + 1)}{(_tokenCount > MaxTokens ? "+" : "")} fields");
+        }
+
+        private ReadOnlySpan<char> Token(int i) => i < Math.Min(_tokenCount, MaxTokens) ? _line.AsSpan(_starts[i], _lengths[i]) : ReadOnlySpan<char>.Empty;
+
+        private bool Is(int i, string word) => Token(i).SequenceEqual(word.AsSpan());
+
+        private int Int(int i)
+        {
+            if (!int.TryParse(Token(i), NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out int v))
+                throw Error(_lineNumber, $"'{Token(i).ToString()}' is not a whole number");
+            return v;
+        }
+
+        private float Float(int i)
+        {
+            if (!float.TryParse(Token(i), NumberStyles.Float, CultureInfo.InvariantCulture, out float v) || float.IsNaN(v) || float.IsInfinity(v))
+                throw Error(_lineNumber, $"'{Token(i).ToString()}' is not a finite number");
+            return v;
+        }
+
+        private double Double(int i)
+        {
+            if (!double.TryParse(Token(i), NumberStyles.Float, CultureInfo.InvariantCulture, out double v) || double.IsNaN(v) || double.IsInfinity(v))
+                throw Error(_lineNumber, $"'{Token(i).ToString()}' is not a finite number");
+            return v;
+        }
+
+        private FormatException Error(int line, string problem) => new FormatException($"{_source}:{line}: {problem}");
+    }
+}

@@ -1,0 +1,57 @@
+using System;
+using System.Globalization;
+
+namespace AvatarGo.Core
+{
+    /// <summary>Shared vocabulary of the session text format: keywords and the names of enum values.</summary>
+    internal static class SessionText
+    {
+        public const string Magic = "avatargo-session";
+
+        public static string ClassName(DeviceClass c) =>
+            c == DeviceClass.Hmd ? "hmd" : c == DeviceClass.Controller ? "controller" : "tracker";
+
+        public static bool TryClass(ReadOnlySpan<char> s, out DeviceClass c)
+        {
+            if (s.SequenceEqual("hmd".AsSpan())) { c = DeviceClass.Hmd; return true; }
+            if (s.SequenceEqual("controller".AsSpan())) { c = DeviceClass.Controller; return true; }
+            if (s.SequenceEqual("tracker".AsSpan())) { c = DeviceClass.Tracker; return true; }
+            c = default;
+            return false;
+        }
+
+        private static readonly string[] RoleNames = { "none", "head", "left-hand", "right-hand", "pelvis", "left-foot", "right-foot" };
+
+        public static string RoleName(DeviceRole r) => RoleNames[(int)r];
+
+        public static bool TryRole(ReadOnlySpan<char> s, out DeviceRole r)
+        {
+            for (int i = 0; i < RoleNames.Length; i++)
+                if (s.SequenceEqual(RoleNames[i].AsSpan())) { r = (DeviceRole)i; return true; }
+            r = default;
+            return false;
+        }
+
+        public static string EventName(InputEventKind k) => k == InputEventKind.TriggerPressed ? "trigger-pressed" : "trigger-released";
+
+        public static bool TryEvent(ReadOnlySpan<char> s, out InputEventKind k)
+        {
+            if (s.SequenceEqual("trigger-pressed".AsSpan())) { k = InputEventKind.TriggerPressed; return true; }
+            if (s.SequenceEqual("trigger-released".AsSpan())) { k = InputEventKind.TriggerReleased; return true; }
+            k = default;
+            return false;
+        }
+
+        public static string F(float v) => v.ToString("R", CultureInfo.InvariantCulture);
+
+        public static string F(double v) => v.ToString("R", CultureInfo.InvariantCulture);
+
+        /// <summary>True when <paramref name="s"/> can stand as one token (non-empty, no white space).</summary>
+        public static bool IsToken(string s)
+        {
+            if (string.IsNullOrEmpty(s)) return false;
+            foreach (char c in s) if (char.IsWhiteSpace(c)) return false;
+            return true;
+        }
+    }
+}

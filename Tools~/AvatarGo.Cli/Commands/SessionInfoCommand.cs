@@ -1,0 +1,54 @@
+using System.Globalization;
+using System.IO;
+using AvatarGo.Core;
+
+namespace AvatarGo.Cli.Commands;
+
+/// <summary>`avatargo session info FILE`: devices, rate, frames, duration, events, ground truth.</summary>
+public sealed class SessionInfoCommand : ICommand
+{
+    public string Name => "session info";
+    public string Summary => "Devices, rate, frames, duration and events of a session file";
+    public string Help => """
+        avatargo session info FILE
+
+        Reads a session (AvatarGo session format v1, Documentation~/session-format.md) from start to
+        end, streaming, and prints its devices (id, class, serial, runtime role and, for synthetic
+        sessions, true role), nominal rate, frame count, duration, trigger events and whether it
+        carries ground truth.
+        Exit codes: 0 ok, 1 unreadable or malformed file (one-line message naming the line), 2 bad arguments.
+        """;
+
+    public int Run(string[] args, TextWriter stdout, TextWriter stderr)
+    {
+        var a = new ArgReader(args);
+        string path = a.Positional0("FILE");
+        a.ThrowOnUnknown(1);
+        using SessionReader reader = SessionReader.Open(path);
+        SessionHeader h = reader.Header;
+        SessionFrame frame = reader.CreateFrame();
+        int presses = 0, releases = 0, truthFrames = 0;
+        double first = double.NaN, last = double.NaN;
+        while (reader.ReadFrame(frame))
+        {
+            if (double.IsNaN(first)) first = frame.Time;
+            last = frame.Time;
+            foreach (InputEvent e in frame.Events)
+                if (e.Kind == InputEventKind.TriggerPressed) presses++; else releases++;
+            if (System.Array.IndexOf(frame.HasTruth, true) >= 0) truthFrames++;
+        }
+        var inv = CultureInfo.InvariantCulture;
+        stdout.WriteLine($"file: {Path.GetFileName(path)}");
+        stdout.WriteLine(string.Create(inv, $"rate: {h.Rate:0.###} Hz"));
+        stdout.WriteLine(string.Create(inv, $"frames: {reader.FrameCount}, duration {(reader.FrameCount > 0 ? last - first : 0):0.###} s"));
+        stdout.WriteLine($"devices: {h.Devices.Count}");
+        for (int i = 0; i < h.Devices.Count; i++)
+        {
+            DeviceInfo d = h.Devices[i];
+            stdout.WriteLine($"  {d.Id}: {d.Class} serial '{d.Serial}' runtime role {d.RuntimeRole}{(h.HasTrueRoles ? ", true role " + h.TrueRole(i) : "")}");
+        }
+        stdout.WriteLine($"events: {presses} trigger presses, {releases} releases");
+        stdout.WriteLine($"ground truth: {(h.TruthHumanoid != null ? $"skeleton of {h.TruthHumanoid.Skeleton.JointCount} joints ({h.TruthHumanoid.Count} humanoid bones), " : "no skeleton, ")}{truthFrames} frames with joint poses");
+        return 0;
+    }
+}

@@ -1,0 +1,63 @@
+using System;
+using System.IO;
+using System.Numerics;
+using AvatarGo.Core;
+using NUnit.Framework;
+
+namespace AvatarGo.Tools.Tests;
+
+public class SessionCommandTests
+{
+    private static string WriteSession(int frames, bool complete = true)
+    {
+        string path = Path.Combine(Path.GetTempPath(), "avatargo-info-" + Guid.NewGuid().ToString("N") + ".agsession");
+        var h = new SessionHeader(72f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "H"), new DeviceInfo(2, DeviceClass.Controller, "C") },
+            new[] { DeviceRole.Head, DeviceRole.RightHand });
+        var text = new StringWriter();
+        using (var w = new SessionWriter(text, h))
+        {
+            var f = new SessionFrame(h);
+            for (int i = 0; i < frames; i++)
+            {
+                f.Clear();
+                f.Time = i / 72.0;
+                f.Samples[0] = new DeviceSample(new Pose(new Vector3(0, 1.6f, 0), Quaternion.Identity), true);
+                f.Samples[1] = new DeviceSample(new Pose(new Vector3(0.3f, 1.1f, 0.2f), Quaternion.Identity), true);
+                if (i == 10) f.Events.Add(new InputEvent(2, InputEventKind.TriggerPressed));
+                w.WriteFrame(f);
+            }
+            if (!complete) { File.WriteAllText(path, text.ToString()); return path; }
+        }
+        File.WriteAllText(path, text.ToString());
+        return path;
+    }
+
+    [Test]
+    public void InfoCountsFramesAndEvents()
+    {
+        string path = WriteSession(145);
+        try
+        {
+            var r = CliRunner.Run("session", "info", path);
+            Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
+            StringAssert.Contains("frames: 145, duration 2 s", r.Stdout);
+            StringAssert.Contains("1 trigger presses", r.Stdout);
+            StringAssert.Contains("true role RightHand", r.Stdout);
+        }
+        finally { File.Delete(path); }
+    }
+
+    [Test]
+    public void TruncatedSessionIsAOneLineErrorWithExitCode1()
+    {
+        string path = WriteSession(20, complete: false);
+        try
+        {
+            var r = CliRunner.Run("session", "info", path);
+            Assert.That(r.ExitCode, Is.EqualTo(1));
+            Assert.That(r.Stderr.TrimEnd().Split('\n').Length, Is.EqualTo(1));
+            StringAssert.Contains("truncated", r.Stderr);
+        }
+        finally { File.Delete(path); }
+    }
+}
