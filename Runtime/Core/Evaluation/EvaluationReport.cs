@@ -1,0 +1,41 @@
+using System.Collections.Generic;
+
+namespace AvatarGo.Core
+{
+    /// <summary>How closely the avatar followed the wearer over a session (<see cref="SessionEvaluator"/>).</summary>
+    public sealed class EvaluationReport
+    {
+        /// <summary>The offset mode evaluated.</summary>
+        public OffsetMode Mode { get; internal set; }
+
+        /// <summary>Frames compared (every frame after calibration).</summary>
+        public int Frames { get; internal set; }
+
+        /// <summary>The calibration used, or null when calibration did not complete.</summary>
+        public CalibrationProfile Profile { get; internal set; }
+
+        /// <summary>Why calibration failed, when it did.</summary>
+        public string CalibrationMessage { get; internal set; }
+
+        /// <summary>Position error per humanoid joint, in millimetres.</summary>
+        public Dictionary<HumanBone, ErrorSeries> JointPositionMm { get; } = new Dictionary<HumanBone, ErrorSeries>();
+
+        /// <summary>Position error of the end effectors (hips, head, hands, feet), in millimetres.</summary>
+        public ErrorSeries EndEffectorMm { get; } = new ErrorSeries();
+
+        /// <summary>Position error of the middle joints (elbows, knees), in millimetres.</summary>
+        public ErrorSeries MidJointMm { get; } = new ErrorSeries();
+
+        /// <summary>Position error over all compared joints (MPJPE samples), in millimetres.</summary>
+        public ErrorSeries AllJointsMm { get; } = new ErrorSeries();
+
+        /// <summary>Rotation error of the end effectors (change since calibration, avatar vs wearer), in degrees.</summary>
+        public ErrorSeries EndEffectorDegrees { get; } = new ErrorSeries();
+
+        /// <summary>Difference of the knee's interior angle, avatar vs wearer, in degrees.</summary>
+        public ErrorSeries KneeAngleDegrees { get; } = new ErrorSeries();
+
+        /// <summary>Frames in which a hand could not reach its controller.</summary>
+        public int UnreachedHandFrames { get; internal set; }
+    }
+}

@@ -1,0 +1,191 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// Turns mocap into a complete synthetic session: the wearer stands in T-pose and presses the trigger, the
+    /// avatar appears where a <see cref="Calibrator"/> places it, the wearer walks into it (with an optional
+    /// misalignment) and presses again, then blends smoothly from the T-pose into the clip and performs it.
+    /// Devices come from a <see cref="VirtualDeviceRig"/> with noise; the ground truth (true roles, the wearer's
+    /// skeleton, every humanoid joint's world pose) is recorded. Frames are streamed to a <see cref="SessionWriter"/>.
+    /// </summary>
+    public sealed class SessionSimulator
+    {
+        /// <summary>The true role of each simulated device, in device order (ids 0 … 5).</summary>
+        public static readonly DeviceRole[] DeviceRoles =
+            { DeviceRole.Head, DeviceRole.RightHand, DeviceRole.LeftHand, DeviceRole.LeftFoot, DeviceRole.Pelvis, DeviceRole.RightFoot };
+
+        private readonly BvhClip _clip;
+        private readonly HumanoidMap _map;
+        private readonly SimulationOptions _options;
+
+        /// <summary>Prepares a simulation of <paramref name="clip"/> (lengths in metres) worn by its own skeleton.</summary>
+        /// <exception cref="ArgumentException">The clip's skeleton lacks a required humanoid bone.</exception>
+        public SessionSimulator(BvhClip clip, SimulationOptions options = null, HumanoidMap map = null)
+        {
+            _clip = clip ?? throw new ArgumentNullException(nameof(clip));
+            _options = options ?? new SimulationOptions();
+            _map = map ?? HumanoidNaming.Detect(clip.Skeleton);
+            var missing = _map.MissingRequired();
+            if (missing.Count > 0) throw new ArgumentException($"The clip's skeleton lacks required bones: {string.Join(", ", missing)}.", nameof(clip));
+        }
+
+        /// <summary>The devices of the simulated session.</summary>
+        public static DeviceInfo[] Devices()
+        {
+            var devices = new DeviceInfo[DeviceRoles.Length];
+            for (int i = 0; i < devices.Length; i++)
+            {
+                DeviceClass c = DeviceRoles[i] == DeviceRole.Head ? DeviceClass.Hmd
+                    : DeviceRoles[i] == DeviceRole.LeftHand || DeviceRoles[i] == DeviceRole.RightHand ? DeviceClass.Controller : DeviceClass.Tracker;
+                devices[i] = new DeviceInfo(i, c, "SIM-" + c.ToString().ToUpperInvariant() + "-" + i);
+            }
+            return devices;
+        }
+
+        /// <summary>The session header (devices, true roles, the wearer's skeleton).</summary>
+        public SessionHeader CreateHeader() => new SessionHeader(_options.Rate, Devices(), DeviceRoles, _map);
+
+        /// <summary>The number of frames <see cref="Run"/> writes.</summary>
+        public int FrameCount => (int)Math.Round((_options.TPoseSeconds + _options.WalkInSeconds + _options.BlendSeconds + _clip.FrameCount * _clip.FrameTime) * _options.Rate);
+
+        /// <summary>Writes the whole session. <paramref name="progress"/> (optional) gets the fraction done.</summary>
+        public void Run(SessionWriter writer, Action<float> progress = null)
+        {
+            if (writer == null) throw new ArgumentNullException(nameof(writer));
+            Skeleton s = _map.Skeleton;
+            var rng = new Random(_options.Seed);
+            DeviceMountings mountings = _options.Mountings ?? DeviceMountings.Sample(rng);
+            var rig = new VirtualDeviceRig(_map, mountings);
+            DeviceInfo[] devices = Devices();
+            var calibrator = new Calibrator(devices, _map);
+            var frame = new SessionFrame(writer.Header);
+            var pose = new SkeletonPose(s);
+            var devicePoses = new Pose[6];
+            float dt = 1f / _options.Rate;
+
+            // Where the wearer starts: somewhere in a 2 m × 2 m area, facing anywhere.
+            var start = new Pose(new Vector3((float)rng.NextDouble() * 2 - 1, 0, (float)rng.NextDouble() * 2 - 1),
+                Rotations.AngleAxis((float)rng.NextDouble() * 360f, Vector3.UnitY));
+            var tposeStart = new Pose[s.JointCount];
+            TPoser.Apply(_map, pose, start);
+            Array.Copy(pose.Local, tposeStart, s.JointCount);
+
+            // The clip's local poses, moved so that its first frame stands where the walk-in ends; filled after step 1.
+            var clipLocal = new Pose[_clip.FrameCount][];
+            for (int f = 0; f < clipLocal.Length; f++)
+            {
+                clipLocal[f] = new Pose[s.JointCount];
+                _clip.GetLocalPoses(f, clipLocal[f]);
+            }
+
+            int total = FrameCount;
+            int tposeFrames = (int)Math.Round(_options.TPoseSeconds * _options.Rate);
+            int walkFrames = (int)Math.Round(_options.WalkInSeconds * _options.Rate);
+            int blendFrames = Math.Max(1, (int)Math.Round(_options.BlendSeconds * _options.Rate));
+            Pose[] tposeTarget = null;
+            Pose target = start;
+            var none = new List<InputEvent>();
+
+            for (int i = 0; i < total; i++)
+            {
+                double time = i * (double)dt;
+                frame.Clear();
+                frame.Time = time;
+                if (i < tposeFrames)
+                {
+                    Array.Copy(tposeStart, pose.Local, s.JointCount);
+                    if (i == tposeFrames - 1) frame.Events.Add(new InputEvent(1, InputEventKind.TriggerPressed));
+                }
+                else if (i < tposeFrames + walkFrames)
+                {
+                    if (tposeTarget == null)
+                    {
+                        // The avatar appeared where the calibrator placed it: walk there (plus the misalignment).
+                        Pose placement = calibrator.State == CalibrationState.WalkIn ? calibrator.Profile.Placement : start;
+                        target = placement * new Pose(_options.Misalignment, Rotations.AngleAxis(_options.MisalignmentYawDegrees, Vector3.UnitY));
+                        target = new Pose(new Vector3(target.Position.X, 0f, target.Position.Z), target.Rotation);
+                        TPoser.Apply(_map, pose, target);
+                        tposeTarget = (Pose[])pose.Local.Clone();
+                        AlignClip(clipLocal, target);
+                    }
+                    int k = i - tposeFrames;
+                    float walk = Smooth(Math.Min(1f, k / (0.6f * walkFrames)));
+                    Blend(tposeStart, tposeTarget, walk, pose.Local);
+                    if (i == tposeFrames + walkFrames - 1) frame.Events.Add(new InputEvent(2, InputEventKind.TriggerPressed));
+                    if (i == tposeFrames) frame.Events.Add(new InputEvent(1, InputEventKind.TriggerReleased));
+                }
+                else if (i < tposeFrames + walkFrames + blendFrames)
+                {
+                    float b = Smooth((i - tposeFrames - walkFrames) / (float)blendFrames);
+                    Blend(tposeTarget, clipLocal[0], b, pose.Local);
+                    if (i == tposeFrames + walkFrames) frame.Events.Add(new InputEvent(2, InputEventKind.TriggerReleased));
+                }
+                else
+                {
+                    double clipTime = (i - tposeFrames - walkFrames - blendFrames) * (double)dt;
+                    double f = Math.Min(clipTime / _clip.FrameTime, _clip.FrameCount - 1);
+                    int f0 = (int)Math.Floor(f);
+                    int f1 = Math.Min(f0 + 1, _clip.FrameCount - 1);
+                    Blend(clipLocal[f0], clipLocal[f1], (float)(f - f0), pose.Local);
+                }
+                pose.UpdateWorld();
+
+                rig.Compute(pose.World, devicePoses);
+                VirtualDeviceRig.AddNoise(devicePoses, rng, _options.PositionNoise, _options.RotationNoiseDegrees);
+                for (int d = 0; d < devices.Length; d++)
+                    frame.Samples[d] = new DeviceSample(devicePoses[Array.IndexOf(DeviceMountings.Roles, DeviceRoles[d])], true);
+                for (int b = 0; b < HumanBones.Count; b++)
+                {
+                    int joint = _map[(HumanBone)b];
+                    if (joint < 0) continue;
+                    frame.Truth[b] = pose.World[joint];
+                    frame.HasTruth[b] = true;
+                }
+                calibrator.Update(time, frame.Samples, frame.Events);
+                writer.WriteFrame(frame);
+                if (progress != null && (i % 256 == 0 || i == total - 1)) progress((i + 1) / (float)total);
+            }
+        }
+
+        // Moves every clip frame so the first one stands where the T-pose stands (floor at y = 0, same facing).
+        private void AlignClip(Pose[][] clipLocal, Pose target)
+        {
+            Skeleton s = _map.Skeleton;
+            var world = new Pose[s.JointCount];
+            int hips = _map[HumanBone.Hips];
+            int leftLeg = _map[HumanBone.LeftUpperLeg], rightLeg = _map[HumanBone.RightUpperLeg];
+            float floor = float.MaxValue;
+            for (int f = 0; f < clipLocal.Length; f++)
+            {
+                s.ComputeWorld(clipLocal[f], world);
+                for (int j = 0; j < s.JointCount; j++)
+                    if (s.IsAncestorOrSelf(leftLeg, j) || s.IsAncestorOrSelf(rightLeg, j)) floor = Math.Min(floor, world[j].Position.Y);
+            }
+            s.ComputeWorld(clipLocal[0], world);
+            Vector3 right = world[rightLeg].Position - world[leftLeg].Position;
+            Vector3 facing = Vector3.Cross(right, Vector3.UnitY);
+            facing.Y = 0;
+            Quaternion clipYaw = Rotations.LookRotation(Vectors.NormalizeOr(facing, Vector3.UnitZ), Vector3.UnitY);
+            Vector3 hips0 = world[hips].Position;
+            Quaternion turn = target.Rotation * Quaternion.Conjugate(clipYaw);
+            Vector3 pivot = new Vector3(hips0.X, floor, hips0.Z);
+            for (int f = 0; f < clipLocal.Length; f++)
+                for (int j = 0; j < s.JointCount; j++)
+                {
+                    if (s.GetParent(j) >= 0) continue;
+                    Pose p = clipLocal[f][j];
+                    clipLocal[f][j] = new Pose(target.Position + Vector3.Transform(p.Position - pivot, turn), Quaternion.Normalize(turn * p.Rotation));
+                }
+        }
+
+        private static void Blend(Pose[] a, Pose[] b, float t, Pose[] result)
+        {
+            for (int j = 0; j < result.Length; j++) result[j] = Pose.Lerp(a[j], b[j], t);
+        }
+
+        private static float Smooth(float t) => t * t * (3f - 2f * t);
+    }
+}

@@ -1,0 +1,41 @@
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>Settings of <see cref="SessionSimulator"/>.</summary>
+    public sealed class SimulationOptions
+    {
+        /// <summary>Frame rate of the session, in Hz (90).</summary>
+        public float Rate { get; set; } = 90f;
+
+        /// <summary>Seed for mountings, noise and the starting place (1).</summary>
+        public int Seed { get; set; } = 1;
+
+        /// <summary>Standard deviation of the position noise per coordinate, in metres (1 mm).</summary>
+        public float PositionNoise { get; set; } = 0.001f;
+
+        /// <summary>Standard deviation of the rotation noise, in degrees (0.1°).</summary>
+        public float RotationNoiseDegrees { get; set; } = 0.1f;
+
+        /// <summary>The device mountings; null draws them from <see cref="Seed"/> (<see cref="DeviceMountings.Sample"/>).</summary>
+        public DeviceMountings Mountings { get; set; }
+
+        /// <summary>
+        /// How far from the shown avatar the wearer ends the walk-in, in the avatar's frame (x right, y up, z forward),
+        /// in metres (none: a perfect walk-in).
+        /// </summary>
+        public Vector3 Misalignment { get; set; }
+
+        /// <summary>How much the wearer's facing differs from the avatar's after the walk-in, in degrees (0).</summary>
+        public float MisalignmentYawDegrees { get; set; }
+
+        /// <summary>Seconds standing in T-pose before the first trigger press (1.5).</summary>
+        public float TPoseSeconds { get; set; } = 1.5f;
+
+        /// <summary>Seconds walking into the avatar and holding still before the second press (2.5).</summary>
+        public float WalkInSeconds { get; set; } = 2.5f;
+
+        /// <summary>Seconds blending from the T-pose into the clip's first frame (1).</summary>
+        public float BlendSeconds { get; set; } = 1f;
+    }
+}

@@ -1,0 +1,114 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// Turns the current device poses into <see cref="BodyTargets"/> with a <see cref="CalibrationProfile"/> (the
+    /// paper's "Avatar movement"): each joint's world pose is <c>device * JointInDevice</c>, i.e.
+    /// <c>p_t(J) = p_t(T) + R_t(T) R0(T)^-1 v0(TJ)</c> and <c>R_t(J) = R_t(T) R0(T)^-1 R0(J)</c>, for the root, the feet,
+    /// the head and the wrists; the spine bend is the rotation from w0 (turned with the root) to wt; knee and elbow hints
+    /// follow the feet and hands. The same code runs exact and fixed profiles. Allocation-free per frame.
+    /// </summary>
+    /// <remarks>
+    /// w is measured between the hips and head joints the devices give (rather than between the devices
+    /// themselves, as the paper writes it): the same vector up to the constant device offsets, but without the
+    /// HMD's lever arm, so that nodding does not bend the back.
+    /// </remarks>
+    public sealed class BodySolver
+    {
+        private readonly int[] _deviceIndex = new int[7];
+        private readonly Pose[] _jointInDevice = new Pose[7];
+        private readonly Vector3 _rootToHead0;
+        private readonly Quaternion _hipsRotation0;
+        private readonly Vector3[] _kneeInFoot = new Vector3[2];
+        private readonly Vector3[] _elbowInHand = new Vector3[2];
+        private readonly Vector3[] _hipInHips = new Vector3[2];
+        private readonly Vector3[] _shoulderInHips = new Vector3[2];
+        private readonly float _legLength, _armLength;
+
+        /// <summary>
+        /// Prepares the solver for a calibration. <paramref name="devices"/> is the device list whose order the
+        /// per-frame samples follow; <paramref name="avatar"/> and <paramref name="calibrationPose"/> are the scaled
+        /// avatar and its T-pose at the walk-in (<see cref="Calibrator.ScaledAvatar"/>, <see cref="Calibrator.AvatarPose"/>).
+        /// </summary>
+        public BodySolver(CalibrationProfile profile, IReadOnlyList<DeviceInfo> devices, HumanoidMap avatar, SkeletonPose calibrationPose)
+        {
+            Profile = profile ?? throw new ArgumentNullException(nameof(profile));
+            if (devices == null) throw new ArgumentNullException(nameof(devices));
+            if (avatar == null) throw new ArgumentNullException(nameof(avatar));
+            if (calibrationPose == null) throw new ArgumentNullException(nameof(calibrationPose));
+            foreach (DeviceRole role in DeviceMountings.Roles)
+            {
+                _deviceIndex[(int)role] = -1;
+                for (int i = 0; i < devices.Count; i++)
+                    if (devices[i].Id == profile.DeviceId(role)) _deviceIndex[(int)role] = i;
+                if (_deviceIndex[(int)role] < 0) throw new ArgumentException($"No device has the id calibrated for {role}.", nameof(devices));
+                _jointInDevice[(int)role] = profile.JointInDevice(role);
+            }
+            Pose[] w = calibrationPose.World;
+            Pose hips = w[avatar[HumanBone.Hips]];
+            _hipsRotation0 = hips.Rotation;
+            _rootToHead0 = w[avatar[HumanBone.Head]].Position - hips.Position;
+            Vector3 forward = Vector3.Transform(Vector3.UnitZ, profile.Placement.Rotation);
+            Vector3 down = -Vector3.UnitY;
+            for (int side = 0; side < 2; side++)
+            {
+                bool left = side == 0;
+                Pose foot = w[avatar[left ? HumanBone.LeftFoot : HumanBone.RightFoot]];
+                Pose hand = w[avatar[left ? HumanBone.LeftHand : HumanBone.RightHand]];
+                // Knees bend forward; elbows bend backward and down, as from a T-pose with the palms down.
+                _kneeInFoot[side] = Vector3.Transform(forward, Quaternion.Conjugate(foot.Rotation));
+                _elbowInHand[side] = Vector3.Transform(Vector3.Normalize(-forward + 0.5f * down), Quaternion.Conjugate(hand.Rotation));
+                _hipInHips[side] = hips.InverseTransformPoint(w[avatar[left ? HumanBone.LeftUpperLeg : HumanBone.RightUpperLeg]].Position);
+                _shoulderInHips[side] = hips.InverseTransformPoint(w[avatar[left ? HumanBone.LeftUpperArm : HumanBone.RightUpperArm]].Position);
+            }
+            _legLength = Vector3.Distance(w[avatar[HumanBone.LeftUpperLeg]].Position, w[avatar[HumanBone.LeftFoot]].Position);
+            _armLength = Vector3.Distance(w[avatar[HumanBone.LeftUpperArm]].Position, w[avatar[HumanBone.LeftHand]].Position);
+        }
+
+        /// <summary>The calibration used.</summary>
+        public CalibrationProfile Profile { get; }
+
+        /// <summary>Computes this frame's targets from the device samples (in the constructor's device order).</summary>
+        public void Solve(ReadOnlySpan<DeviceSample> samples, ref BodyTargets targets)
+        {
+            targets.HipsActive = Joint(samples, DeviceRole.Pelvis, out targets.Hips);
+            targets.HeadActive = Joint(samples, DeviceRole.Head, out targets.Head);
+            targets.SpineBend = Quaternion.Identity;
+            if (targets.HipsActive && targets.HeadActive)
+            {
+                Quaternion rootTurn = targets.Hips.Rotation * Quaternion.Conjugate(_hipsRotation0);
+                Vector3 w0 = Vector3.Transform(_rootToHead0, rootTurn);
+                targets.SpineBend = Rotations.FromTo(w0, targets.Head.Position - targets.Hips.Position);
+            }
+            Limb(samples, DeviceRole.LeftFoot, 0, in targets.Hips, _hipInHips, _kneeInFoot, _legLength, ref targets.LeftFoot);
+            Limb(samples, DeviceRole.RightFoot, 1, in targets.Hips, _hipInHips, _kneeInFoot, _legLength, ref targets.RightFoot);
+            Limb(samples, DeviceRole.LeftHand, 0, in targets.Hips, _shoulderInHips, _elbowInHand, _armLength, ref targets.LeftHand);
+            Limb(samples, DeviceRole.RightHand, 1, in targets.Hips, _shoulderInHips, _elbowInHand, _armLength, ref targets.RightHand);
+        }
+
+        private bool Joint(ReadOnlySpan<DeviceSample> samples, DeviceRole role, out Pose joint)
+        {
+            DeviceSample s = samples[_deviceIndex[(int)role]];
+            if (!s.IsUsable)
+            {
+                joint = Pose.Identity;
+                return false;
+            }
+            joint = s.Pose * _jointInDevice[(int)role];
+            return true;
+        }
+
+        private void Limb(ReadOnlySpan<DeviceSample> samples, DeviceRole role, int side, in Pose hips, Vector3[] rootInHips,
+            Vector3[] bendInEnd, float length, ref LimbTarget target)
+        {
+            target.IsActive = Joint(samples, role, out target.Goal);
+            if (!target.IsActive) return;
+            Vector3 root = hips.TransformPoint(rootInHips[side]);
+            Vector3 bend = Vector3.Transform(bendInEnd[side], target.Goal.Rotation);
+            target.Hint = (root + target.Goal.Position) * 0.5f + bend * length;
+        }
+    }
+}
