@@ -115,6 +115,136 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void MoreFrameContentProblems()
+        {
+            var l = ValidLines(); int i = IndexOf(l, "pose 1", 1);
+            l[i] = "pose 1 tracked 0 NaN 0 0 0 0 1";
+            AssertFailsAtLine(l, i + 1, "NaN position");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l[i] = "pose 1 tracked 0 1 0 0 0 0 1e40";
+            AssertFailsAtLine(l, i + 1, "overflows a float");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l[i] = "pose 1 tracked 0 1 0 0 0 0 0.9";
+            AssertFailsAtLine(l, i + 1, "not a unit quaternion");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l.Insert(i + 1, l[i]);
+            AssertFailsAtLine(l, i + 2, "two poses of one device");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l.Insert(i + 1, "input 1 0.5 1.5");
+            AssertFailsAtLine(l, i + 2, "analog value above 1");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l.Insert(i + 1, "input 1 0.5 -"); l.Insert(i + 2, "input 1 0.5 -");
+            AssertFailsAtLine(l, i + 3, "two input lines");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l.Insert(i + 1, "truth LeftElbow 0 1 0 0 0 0 1");
+            AssertFailsAtLine(l, i + 2, "not a HumanBodyBones name");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l.Insert(i + 1, "wobble 3");
+            AssertFailsAtLine(l, i + 2, "unknown line in this minor version");
+            l = ValidLines(); i = IndexOf(l, "frame", 1);
+            l[i] = "frame Infinity";
+            AssertFailsAtLine(l, i + 1, "infinite time");
+            l = ValidLines(); i = l.Count - 1;
+            l.Add("frame 9");
+            AssertFailsAtLine(l, i + 2, "content after the end line");
+        }
+
+        [Test]
+        public void MoreHeaderProblems()
+        {
+            var l = ValidLines(); int i = IndexOf(l, "rate");
+            l[i] = "rate 1e300";
+            AssertFailsAtLine(l, i + 1, "rate overflows a float");
+            l = ValidLines(); i = IndexOf(l, "rate");
+            l[i] = "rate 0";
+            AssertFailsAtLine(l, i + 1, "zero rate");
+            l = ValidLines(); i = IndexOf(l, "device 1");
+            l.Insert(i + 1, "device 1 tracker X none");
+            AssertFailsAtLine(l, i + 2, "device id used twice");
+            l = ValidLines(); i = IndexOf(l, "end-header");
+            l.Insert(i, "truth-role 0 head");
+            AssertFailsAtLine(l, i + 2, "a true role for device 0 only (reported at end-header)");
+            l = ValidLines(); i = IndexOf(l, "end-header");
+            l.Insert(i, "truth-joint 0 -1 Hips joint Hips 0 1 0 0 0 0 1");
+            l.Insert(i + 1, "truth-joint 1 0 - joint Hips 0 1 0 0 0 0 1");
+            AssertFailsAtLine(l, i + 2, "joint name used twice");
+            l = ValidLines(); i = IndexOf(l, "end-header");
+            l.Insert(i, "truth-joint 0 -1 Hips joint Hips 0 1 0 0 0 0 1");
+            l.Insert(i + 1, "truth-joint 1 3 - joint Spine 0 1 0 0 0 0 1");
+            AssertFailsAtLine(l, i + 2, "parent after child");
+            l = ValidLines(); l[0] = "avatargo-session 1";
+            AssertFailsAtLine(l, 1, "version without minor");
+            l = ValidLines(); l[0] = "bvh-session 1.0";
+            AssertFailsAtLine(l, 1, "another format");
+        }
+
+        [Test]
+        public void ErrorsAreOneLineAndNameSourceLineAndVersion()
+        {
+            var l = ValidLines(); l[0] = "avatargo-session 3.1";
+            var e = Assert.Throws<FormatException>(() => new SessionReader(new StringReader(string.Join("\n", l)), "future.agsession"));
+            Assert.That(e.Message, Is.EqualTo("future.agsession:1: format version 3.1 is not supported (this reader reads 1.x)"));
+        }
+
+        [Test]
+        public void ANewerMinorVersionsUnknownLinesAreSkipped()
+        {
+            var l = ValidLines(); l[0] = "avatargo-session 1.7";
+            l.Insert(IndexOf(l, "end-header"), "colour 0 red");
+            int i = IndexOf(l, "pose 1", 2);
+            l.Insert(i + 1, "haptics 1 0.5 0.1");
+            using var r = new SessionReader(new StringReader(string.Join("\n", l)), "newer");
+            var f = r.CreateFrame();
+            int n = 0;
+            while (r.ReadFrame(f)) n++;
+            Assert.That(n, Is.EqualTo(5));
+        }
+
+        [Test]
+        public void CrlfTabsCommentsAndNoFinalNewlineReadTheSame()
+        {
+            var l = ValidLines();
+            var edited = new List<string>();
+            for (int i = 0; i < l.Count; i++)
+            {
+                if (i == 3) edited.Add("# a comment line");
+                if (i == 6) edited.Add("   ");
+                edited.Add(i % 2 == 0 ? l[i].Replace(" ", " \t ") : l[i]);
+            }
+            string lf = string.Join("\n", l) + "\n", crlf = string.Join("\r\n", edited);
+            using var a = new SessionReader(new StringReader(lf), "lf");
+            using var b = new SessionReader(new StringReader(crlf), "crlf");
+            SessionFrame fa = a.CreateFrame(), fb = b.CreateFrame();
+            int n = 0;
+            while (a.ReadFrame(fa))
+            {
+                Assert.That(b.ReadFrame(fb), Is.True);
+                Assert.That(fb.Time, Is.EqualTo(fa.Time));
+                for (int d = 0; d < 2; d++) Assert.That(fb.Samples[d].Pose.Rotation, Is.EqualTo(fa.Samples[d].Pose.Rotation));
+                Assert.That(fb.Events.Count, Is.EqualTo(fa.Events.Count));
+                n++;
+            }
+            Assert.That(b.ReadFrame(fb), Is.False);
+            Assert.That(n, Is.EqualTo(5));
+        }
+
+        [Test]
+        public void ARotationSlightlyOffUnitIsRenormalisedAndAZeroOneInALostSampleBecomesIdentity()
+        {
+            var l = ValidLines(); int i = IndexOf(l, "pose 1", 1);
+            l[i] = "pose 1 tracked 0 1 0 0 0.6006 0 0.8";
+            int j = IndexOf(l, "pose 0", 1);
+            l[j] = "pose 0 lost 0 1.7 0 0 0 0 0";
+            using var r = new SessionReader(new StringReader(string.Join("\n", l)), "renorm");
+            var f = r.CreateFrame();
+            r.ReadFrame(f); r.ReadFrame(f);
+            Assert.That(f.Samples[1].Pose.Rotation.Length(), Is.EqualTo(1f).Within(1e-6f), "renormalised");
+            Assert.That(f.Samples[1].Pose.Rotation.Y, Is.EqualTo(0.6006f / MathF.Sqrt(0.6006f * 0.6006f + 0.64f)).Within(1e-6f));
+            Assert.That(f.Samples[0].Pose.Rotation, Is.EqualTo(Quaternion.Identity));
+            Assert.That(f.Samples[0].Pose.Position, Is.EqualTo(new Vector3(0, 1.7f, 0)), "a lost sample keeps its position");
+        }
+
+        [Test]
         public void UntrackedZeroQuaternionIsAccepted()
         {
             var l = ValidLines(); int i = IndexOf(l, "pose 0", 2);
