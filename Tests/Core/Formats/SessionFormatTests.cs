@@ -153,6 +153,7 @@ namespace AvatarGo.Core.Tests
                         w.WriteFrame(f);
                     }
                 }
+                TestContext.WriteLine($"{new FileInfo(path).Length / (double)frames:0} bytes per six-device frame");
                 using (var r = SessionReader.Open(path))
                 {
                     var f = r.CreateFrame();

@@ -60,4 +60,59 @@ public class SessionCommandTests
         }
         finally { File.Delete(path); }
     }
+
+    [TestCase("avatargo-session 2.0", "x.agsession:1: format version 2.0 is not supported")]
+    [TestCase("HIERARCHY", "x.agsession:1: not an AvatarGo session")]
+    [TestCase("", "x.agsession:1: the file is empty")]
+    public void BadFilesGiveExitCode1AndOneLineNamingTheLine(string firstLine, string expected)
+    {
+        string dir = Path.Combine(Path.GetTempPath(), "avatargo-info-" + Guid.NewGuid().ToString("N"));
+        Directory.CreateDirectory(dir);
+        string path = Path.Combine(dir, "x.agsession");
+        try
+        {
+            File.WriteAllText(path, firstLine.Length == 0 ? "" : firstLine + "\nunits m s\n");
+            var r = CliRunner.Run("session", "info", path);
+            Assert.That(r.ExitCode, Is.EqualTo(1));
+            Assert.That(r.Stderr.TrimEnd().Split('\n').Length, Is.EqualTo(1), r.Stderr);
+            StringAssert.Contains(expected, r.Stderr);
+            Assert.That(r.Stdout, Is.Empty, "nothing printed for a bad file");
+        }
+        finally { Directory.Delete(dir, true); }
+    }
+
+    [Test]
+    public void InfoReportsGroundTruth()
+    {
+        string path = Path.Combine(Path.GetTempPath(), "avatargo-info-" + Guid.NewGuid().ToString("N") + ".agsession");
+        try
+        {
+            var names = new[] { "Hips", "Spine", "Head" };
+            var rest = new[] { new Pose(new Vector3(0, 1, 0), Quaternion.Identity), new Pose(new Vector3(0, 0.2f, 0), Quaternion.Identity), new Pose(new Vector3(0, 0.5f, 0), Quaternion.Identity) };
+            var skeleton = new Skeleton(names, new[] { -1, 0, 1 }, rest);
+            var map = new HumanoidMap(skeleton, new[]
+            {
+                new System.Collections.Generic.KeyValuePair<HumanBone, string>(HumanBone.Hips, "Hips"),
+                new System.Collections.Generic.KeyValuePair<HumanBone, string>(HumanBone.Head, "Head"),
+            });
+            var h = new SessionHeader(90f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "H") }, new[] { DeviceRole.Head }, map);
+            using (var w = SessionWriter.Create(path, h))
+            {
+                var f = new SessionFrame(h);
+                for (int i = 0; i < 10; i++)
+                {
+                    f.Clear();
+                    f.Time = i / 90.0;
+                    f.Samples[0] = new DeviceSample(new Pose(new Vector3(0, 1.7f, 0), Quaternion.Identity), true);
+                    if (i < 4) { f.Truth[(int)HumanBone.Head] = new Pose(new Vector3(0, 1.7f, 0), Quaternion.Identity); f.HasTruth[(int)HumanBone.Head] = true; }
+                    w.WriteFrame(f);
+                }
+            }
+            var r = CliRunner.Run("session", "info", path);
+            Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
+            StringAssert.Contains("ground truth: skeleton of 3 joints (2 humanoid bones), 4 frames with joint poses", r.Stdout);
+            StringAssert.Contains("true role Head", r.Stdout);
+        }
+        finally { File.Delete(path); }
+    }
 }
