@@ -35,6 +35,7 @@ namespace AvatarGo.Core
         private int _tokenCount;
         private int _lineNumber;
         private bool _unread;
+        private FormatException _failure;
         private double _lastTime = double.NegativeInfinity;
         private bool _ended;
         private readonly int _minor;
@@ -71,11 +72,29 @@ namespace AvatarGo.Core
         /// Reads the next frame into <paramref name="frame"/>; false at the end of the session (after the
         /// end line has been checked against the frame count).
         /// </summary>
+        /// <remarks>
+        /// Allocates nothing. After a <see cref="FormatException"/> the content of <paramref name="frame"/> is undefined
+        /// and every later call throws the same error; the frames returned before it are whole and valid.
+        /// </remarks>
         /// <exception cref="FormatException">The frame is malformed, or the file ends without its end line (truncated).</exception>
         public bool ReadFrame(SessionFrame frame)
         {
             if (frame == null) throw new ArgumentNullException(nameof(frame));
             if (frame.Samples.Length != Header.Devices.Count) throw new ArgumentException("The frame was made for another header.", nameof(frame));
+            if (_failure != null) throw new FormatException(_failure.Message);
+            try
+            {
+                return ReadFrameCore(frame);
+            }
+            catch (FormatException e)
+            {
+                _failure = e; // the stream position is now unreliable: every later call reports the same problem
+                throw;
+            }
+        }
+
+        private bool ReadFrameCore(SessionFrame frame)
+        {
             if (_ended) return false;
             if (!NextLine()) throw Error(_lineNumber + 1, $"the file ends after {FrameCount} frames without its 'end' line (truncated?)");
             if (Is(0, "end"))
@@ -185,18 +204,21 @@ namespace AvatarGo.Core
                 if (Is(0, "end-header")) break;
                 if (Is(0, "units"))
                 {
+                    if (units) throw Error(_lineNumber, "a second 'units' line");
                     Expect(3, "units m s");
                     if (!Is(1, "m") || !Is(2, "s")) throw Error(_lineNumber, "only 'units m s' (metres, seconds) is defined");
                     units = true;
                 }
                 else if (Is(0, "handedness"))
                 {
+                    if (handedness) throw Error(_lineNumber, "a second 'handedness' line");
                     Expect(4, "handedness left y-up z-forward");
                     if (!Is(1, "left") || !Is(2, "y-up") || !Is(3, "z-forward")) throw Error(_lineNumber, "only 'handedness left y-up z-forward' (Unity's frame) is defined");
                     handedness = true;
                 }
                 else if (Is(0, "rate"))
                 {
+                    if (!float.IsNaN(rate)) throw Error(_lineNumber, "a second 'rate' line");
                     Expect(2, "rate HZ");
                     rate = Float(1);
                     if (!(rate > 0f)) throw Error(_lineNumber, "the rate must be positive");

@@ -172,6 +172,9 @@ namespace AvatarGo.Core.Tests
             l.Insert(i, "truth-joint 0 -1 Hips joint Hips 0 1 0 0 0 0 1");
             l.Insert(i + 1, "truth-joint 1 3 - joint Spine 0 1 0 0 0 0 1");
             AssertFailsAtLine(l, i + 2, "parent after child");
+            l = ValidLines(); i = IndexOf(l, "rate");
+            l.Insert(i + 1, "rate 72");
+            AssertFailsAtLine(l, i + 2, "a second rate line");
             l = ValidLines(); l[0] = "avatargo-session 1";
             AssertFailsAtLine(l, 1, "version without minor");
             l = ValidLines(); l[0] = "bvh-session 1.0";
@@ -242,6 +245,25 @@ namespace AvatarGo.Core.Tests
             Assert.That(f.Samples[1].Pose.Rotation.Y, Is.EqualTo(0.6006f / MathF.Sqrt(0.6006f * 0.6006f + 0.64f)).Within(1e-6f));
             Assert.That(f.Samples[0].Pose.Rotation, Is.EqualTo(Quaternion.Identity));
             Assert.That(f.Samples[0].Pose.Position, Is.EqualTo(new Vector3(0, 1.7f, 0)), "a lost sample keeps its position");
+        }
+
+        [Test]
+        public void ATruncatedRecordingGivesEveryWholeFrameThenKeepsFailing()
+        {
+            // A recorder that crashed: the file stops after frame 3's lines, with no 'end' line.
+            var l = ValidLines();
+            int cut = IndexOf(l, "frame", 3);
+            using var r = new SessionReader(new StringReader(string.Join("\n", l.Take(cut))), "crash.agsession");
+            var f = r.CreateFrame();
+            int n = 0;
+            FormatException e = null;
+            try { while (r.ReadFrame(f)) n++; }
+            catch (FormatException x) { e = x; }
+            Assert.That(n, Is.EqualTo(3), "frames 0..2 are whole and delivered");
+            Assert.That(e, Is.Not.Null);
+            StringAssert.StartsWith($"crash.agsession:{cut + 1}: ", e.Message);
+            var again = Assert.Throws<FormatException>(() => r.ReadFrame(f));
+            Assert.That(again.Message, Is.EqualTo(e.Message), "a failed reader does not carry on from an unreliable position");
         }
 
         [Test]
