@@ -267,6 +267,59 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void RandomDamageNeverGivesAnotherExceptionType()
+        {
+            // 3000 randomly damaged copies (a character deleted, replaced or inserted, a line dropped or doubled,
+            // the text cut anywhere): each either reads or fails with a FormatException naming a line; never
+            // IndexOutOfRange, ArgumentException or the like.
+            var valid = ValidLines();
+            valid.Insert(IndexOf(valid, "end-header"), "truth-joint 0 -1 Hips joint Hips 0 1 0 0 0 0 1");
+            valid.Insert(IndexOf(valid, "end-header"), "truth-joint 1 0 Head end Head 0 0.6 0 0 0 0 1");
+            valid.Insert(IndexOf(valid, "pose 1", 2) + 1, "truth Head 0 1.6 0 0 0 0 1");
+            valid.Insert(IndexOf(valid, "pose 1", 3) + 1, "input 1 0.25 -");
+            string text = string.Join("\n", valid) + "\n";
+            const string alphabet = " \t\n\r#-.0123456789eEaNfIlosttrackedpose";
+            var rng = new Random(1234);
+            int failures = 0;
+            for (int n = 0; n < 3000; n++)
+            {
+                var damaged = new System.Text.StringBuilder(text);
+                int edits = 1 + rng.Next(3);
+                for (int k = 0; k < edits && damaged.Length > 0; k++)
+                {
+                    int at = rng.Next(damaged.Length);
+                    switch (rng.Next(5))
+                    {
+                        case 0: damaged.Remove(at, 1); break;
+                        case 1: damaged[at] = alphabet[rng.Next(alphabet.Length)]; break;
+                        case 2: damaged.Insert(at, alphabet[rng.Next(alphabet.Length)]); break;
+                        case 3: damaged.Length = at; break;
+                        default:
+                            var lines = damaged.ToString().Split('\n').ToList();
+                            int li = rng.Next(lines.Count);
+                            if (rng.Next(2) == 0) lines.RemoveAt(li); else lines.Insert(li, lines[li]);
+                            damaged.Clear().Append(string.Join("\n", lines));
+                            break;
+                    }
+                }
+                try
+                {
+                    using var r = new SessionReader(new StringReader(damaged.ToString()), "fuzz");
+                    var f = r.CreateFrame();
+                    while (r.ReadFrame(f))
+                        for (int d = 0; d < f.Samples.Length; d++)
+                            Assert.That(f.Samples[d].Pose.IsValid, Is.True, "every delivered pose is valid, tracked or not");
+                }
+                catch (FormatException e)
+                {
+                    failures++;
+                    StringAssert.IsMatch(@"^fuzz:\d+: \S", e.Message);
+                }
+            }
+            Assert.That(failures, Is.GreaterThan(2000), "most damage is detected (the rest: e.g. a changed digit)");
+        }
+
+        [Test]
         public void UntrackedZeroQuaternionIsAccepted()
         {
             var l = ValidLines(); int i = IndexOf(l, "pose 0", 2);
