@@ -1,0 +1,28 @@
+namespace AvatarGo.Core
+{
+    /// <summary>What to tell the wearer for each <see cref="CalibrationError"/>.</summary>
+    public static class CalibrationMessages
+    {
+        /// <summary>A short instruction for the wearer.</summary>
+        public static string For(CalibrationError error)
+        {
+            switch (error)
+            {
+                case CalibrationError.None: return "Calibrated.";
+                case CalibrationError.DeviceMissing: return "A device is missing: connect the headset, both controllers and three trackers (waist and both feet).";
+                case CalibrationError.DeviceNotTracked: return "A device is not being tracked: make sure every tracker and controller is visible to the base stations.";
+                case CalibrationError.DevicesMoving: return "Hold still for a moment while pressing the trigger.";
+                case CalibrationError.ArmsNotLevel: return "Raise both arms straight out to the sides at shoulder height.";
+                case CalibrationError.ArmsNotSpread: return "Spread your arms wide, straight out to the sides.";
+                case CalibrationError.HeadNotUpright: return "Keep your head upright and look straight ahead.";
+                case CalibrationError.NotFacingPlane: return "Stand straight in a T-pose and look straight ahead, not to the side.";
+                case CalibrationError.RoleConflict: return "Hold one controller in each hand and wear one tracker on each foot.";
+                case CalibrationError.FeetNotOnFloor: return "Stand with both feet on the floor and the foot trackers on your feet.";
+                case CalibrationError.PelvisNotBetweenHeadAndFeet: return "Wear the waist tracker on your lower back.";
+                case CalibrationError.RuntimeRoleMismatch: return "A tracker's assigned role does not match where it is worn: check the tracker roles in your VR runtime.";
+                case CalibrationError.WrongState: return "Start again from the T-pose.";
+                default: return error.ToString();
+            }
+        }
+    }
+}

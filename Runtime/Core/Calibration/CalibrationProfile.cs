@@ -1,0 +1,131 @@
+using System;
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// The outcome of calibration: which device plays each role, the avatar scale, and the paper's exact
+    /// offsets. For the root, both feet, the head and both hands it stores the device pose
+    /// <c>p0(T), R0(T)</c> and the avatar joint pose <c>p0(J), R0(J)</c> at the walk-in, and from them the
+    /// joint's pose in the device frame, so that every frame
+    /// <c>p_t(J) = p_t(T) + R_t(T) R0(T)^-1 v0(TJ)</c> and <c>R_t(J) = R_t(T) R0(T)^-1 R0(J)</c>
+    /// (<see cref="JointInDevice"/>). Also the root-to-head vector <c>w0</c>.
+    /// </summary>
+    public sealed class CalibrationProfile
+    {
+        private const int RoleSlots = 7;
+        private readonly int[] _deviceIds = new int[RoleSlots];
+        private readonly string[] _serials = new string[RoleSlots];
+        private readonly Pose[] _deviceAtCalibration = new Pose[RoleSlots];
+        private readonly Pose[] _jointAtCalibration = new Pose[RoleSlots];
+        private readonly Pose[] _jointInDevice = new Pose[RoleSlots];
+
+        /// <summary>The current format version of persisted profiles.</summary>
+        public const int Version = 1;
+
+        /// <summary>Creates an empty profile; <see cref="Calibrator"/> fills it.</summary>
+        public CalibrationProfile()
+        {
+            for (int i = 0; i < RoleSlots; i++)
+            {
+                _deviceIds[i] = -1;
+                _serials[i] = string.Empty;
+                _deviceAtCalibration[i] = _jointAtCalibration[i] = _jointInDevice[i] = Pose.Identity;
+            }
+        }
+
+        /// <summary>How the offsets were obtained.</summary>
+        public OffsetMode Mode { get; private set; }
+
+        /// <summary>The uniform scale applied to the avatar (wearer eye height / avatar eye height).</summary>
+        public float AvatarScale { get; internal set; } = 1f;
+
+        /// <summary>The wearer's eye height above the floor, in metres (from the HMD in T-pose).</summary>
+        public float WearerEyeHeight { get; internal set; }
+
+        /// <summary>The unscaled avatar's eye height, in metres.</summary>
+        public float AvatarEyeHeight { get; internal set; }
+
+        /// <summary>The floor height in tracking space.</summary>
+        public float FloorHeight { get; internal set; }
+
+        /// <summary>Where the avatar was shown: a floor point and a yaw (the wearer's facing at the T-pose).</summary>
+        public Pose Placement { get; internal set; } = Pose.Identity;
+
+        /// <summary><c>w0</c>: the vector from the pelvis tracker to the HMD at the walk-in (paper, eq. 1).</summary>
+        public Vector3 RootToHead { get; internal set; }
+
+        /// <summary>The id of the device playing <paramref name="role"/>, or -1.</summary>
+        public int DeviceId(DeviceRole role) => _deviceIds[(int)role];
+
+        /// <summary>The serial of the device playing <paramref name="role"/> (to recognise it next time).</summary>
+        public string Serial(DeviceRole role) => _serials[(int)role];
+
+        /// <summary><c>p0(T), R0(T)</c>: the device's pose at the walk-in.</summary>
+        public Pose DeviceAtCalibration(DeviceRole role) => _deviceAtCalibration[(int)role];
+
+        /// <summary><c>p0(J), R0(J)</c>: the avatar joint's world pose at the walk-in.</summary>
+        public Pose JointAtCalibration(DeviceRole role) => _jointAtCalibration[(int)role];
+
+        /// <summary>
+        /// The joint's pose in the device frame: (<c>R0(T)^-1 v0(TJ)</c>, <c>R0(T)^-1 R0(J)</c>). The joint's world pose
+        /// each frame is <c>devicePose * JointInDevice(role)</c>.
+        /// </summary>
+        public Pose JointInDevice(DeviceRole role) => _jointInDevice[(int)role];
+
+        internal void SetDevice(DeviceRole role, DeviceInfo device)
+        {
+            _deviceIds[(int)role] = device.Id;
+            _serials[(int)role] = device.Serial;
+        }
+
+        internal void SetOffsets(DeviceRole role, Pose device, Pose joint)
+        {
+            _deviceAtCalibration[(int)role] = device;
+            _jointAtCalibration[(int)role] = joint;
+            _jointInDevice[(int)role] = joint.RelativeTo(device);
+        }
+
+        /// <summary>Fixed-offset HMD → head joint translation in the HMD frame: 7 cm down and 9 cm back from the eyes (the inverse of <see cref="TPoser.HeadToEyes"/>).</summary>
+        public static readonly Vector3 FixedHeadOffset = new Vector3(0f, -0.07f, -0.09f);
+
+        /// <summary>Fixed-offset controller → wrist translation in the controller frame: the wrist 7 cm behind the grip.</summary>
+        public static readonly Vector3 FixedWristOffset = new Vector3(0f, 0f, -0.07f);
+
+        /// <summary>
+        /// The paper's baseline on the same calibration: each tracker's position is taken as its joint's
+        /// (pelvis tracker = hips, foot tracker = ankle), the head joint a constant <see cref="FixedHeadOffset"/>
+        /// from the HMD and the wrist a constant <see cref="FixedWristOffset"/> behind the controller. Rotation
+        /// offsets stay the measured ones: the paper's conditions differ in positions, and a baseline with
+        /// wrong rotations would be a straw man.
+        /// </summary>
+        public CalibrationProfile WithFixedOffsets()
+        {
+            var p = new CalibrationProfile(this) { Mode = OffsetMode.Fixed };
+            foreach (DeviceRole role in DeviceMountings.Roles)
+            {
+                Vector3 position = role == DeviceRole.Head ? FixedHeadOffset
+                    : role == DeviceRole.LeftHand || role == DeviceRole.RightHand ? FixedWristOffset
+                    : Vector3.Zero;
+                p._jointInDevice[(int)role] = new Pose(position, _jointInDevice[(int)role].Rotation);
+            }
+            return p;
+        }
+
+        private CalibrationProfile(CalibrationProfile other)
+        {
+            Array.Copy(other._deviceIds, _deviceIds, RoleSlots);
+            Array.Copy(other._serials, _serials, RoleSlots);
+            Array.Copy(other._deviceAtCalibration, _deviceAtCalibration, RoleSlots);
+            Array.Copy(other._jointAtCalibration, _jointAtCalibration, RoleSlots);
+            Array.Copy(other._jointInDevice, _jointInDevice, RoleSlots);
+            Mode = other.Mode;
+            AvatarScale = other.AvatarScale;
+            WearerEyeHeight = other.WearerEyeHeight;
+            AvatarEyeHeight = other.AvatarEyeHeight;
+            FloorHeight = other.FloorHeight;
+            Placement = other.Placement;
+            RootToHead = other.RootToHead;
+        }
+    }
+}

@@ -1,0 +1,102 @@
+using System;
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// Produces the six device poses a wearer would have (HMD, two controllers, pelvis and foot trackers)
+    /// from a posed humanoid skeleton: each device rigidly attached to its joint with a <see cref="DeviceMountings"/>
+    /// offset, plus optional Gaussian noise. Used to turn mocap into sessions and by tests; allocation-free per frame.
+    /// </summary>
+    public sealed class VirtualDeviceRig
+    {
+        private readonly int[] _joints = new int[DeviceMountings.Roles.Length];
+        private readonly Pose[] _deviceInJoint = new Pose[DeviceMountings.Roles.Length];
+
+        /// <summary>
+        /// Builds the rig for the wearer's skeleton: the mountings (given in the T-pose body frame) are converted
+        /// once into each joint's own frame using the wearer's canonical T-pose.
+        /// </summary>
+        public VirtualDeviceRig(HumanoidMap wearer, DeviceMountings mountings)
+        {
+            Wearer = wearer ?? throw new ArgumentNullException(nameof(wearer));
+            Mountings = mountings ?? throw new ArgumentNullException(nameof(mountings));
+            var tpose = new SkeletonPose(wearer.Skeleton);
+            TPoser.Apply(wearer, tpose, Pose.Identity);
+            for (int i = 0; i < DeviceMountings.Roles.Length; i++)
+            {
+                DeviceRole role = DeviceMountings.Roles[i];
+                HumanBone bone = JointOf(role);
+                _joints[i] = wearer[bone];
+                Pose joint = tpose.World[_joints[i]];
+                Pose mount = mountings[role];
+                Vector3 reference = role == DeviceRole.Head ? TPoser.EyePosition(wearer, tpose, Quaternion.Identity) : joint.Position;
+                var device = new Pose(reference + mount.Position, mount.Rotation);
+                _deviceInJoint[i] = device.RelativeTo(joint);
+            }
+        }
+
+        /// <summary>The wearer's skeleton and humanoid map.</summary>
+        public HumanoidMap Wearer { get; }
+
+        /// <summary>The mountings used.</summary>
+        public DeviceMountings Mountings { get; }
+
+        /// <summary>The humanoid joint a role's device is attached to.</summary>
+        public static HumanBone JointOf(DeviceRole role)
+        {
+            switch (role)
+            {
+                case DeviceRole.Head: return HumanBone.Head;
+                case DeviceRole.LeftHand: return HumanBone.LeftHand;
+                case DeviceRole.RightHand: return HumanBone.RightHand;
+                case DeviceRole.Pelvis: return HumanBone.Hips;
+                case DeviceRole.LeftFoot: return HumanBone.LeftFoot;
+                case DeviceRole.RightFoot: return HumanBone.RightFoot;
+                default: throw new ArgumentOutOfRangeException(nameof(role), role, "No joint for this role.");
+            }
+        }
+
+        /// <summary>The true pose of a role's device in its joint's frame (what exact calibration should recover).</summary>
+        public Pose DeviceInJoint(DeviceRole role) => _deviceInJoint[IndexOf(role)];
+
+        /// <summary>
+        /// Writes the device poses for the wearer's world joint poses <paramref name="world"/> into
+        /// <paramref name="devices"/>, in <see cref="DeviceMountings.Roles"/> order. Allocation-free.
+        /// </summary>
+        public void Compute(ReadOnlySpan<Pose> world, Span<Pose> devices)
+        {
+            if (devices.Length < _joints.Length) throw new ArgumentException("Six device poses are needed.", nameof(devices));
+            for (int i = 0; i < _joints.Length; i++) devices[i] = world[_joints[i]] * _deviceInJoint[i];
+        }
+
+        /// <summary>
+        /// Adds Gaussian noise: each position coordinate with standard deviation <paramref name="positionSigma"/> (m),
+        /// each rotation by a random axis and a Gaussian angle of <paramref name="rotationSigmaDegrees"/>.
+        /// </summary>
+        public static void AddNoise(Span<Pose> poses, Random rng, float positionSigma, float rotationSigmaDegrees)
+        {
+            if (rng == null) throw new ArgumentNullException(nameof(rng));
+            for (int i = 0; i < poses.Length; i++)
+            {
+                var dp = new Vector3(Gaussian(rng), Gaussian(rng), Gaussian(rng)) * positionSigma;
+                var axis = new Vector3(Gaussian(rng), Gaussian(rng), Gaussian(rng));
+                Quaternion dq = Rotations.AngleAxis(Gaussian(rng) * rotationSigmaDegrees, axis);
+                poses[i] = new Pose(poses[i].Position + dp, Quaternion.Normalize(dq * poses[i].Rotation));
+            }
+        }
+
+        private static float Gaussian(Random rng)
+        {
+            double u1 = 1.0 - rng.NextDouble(), u2 = rng.NextDouble();
+            return (float)(Math.Sqrt(-2.0 * Math.Log(u1)) * Math.Cos(2.0 * Math.PI * u2));
+        }
+
+        private static int IndexOf(DeviceRole role)
+        {
+            int i = Array.IndexOf(DeviceMountings.Roles, role);
+            if (i < 0) throw new ArgumentOutOfRangeException(nameof(role));
+            return i;
+        }
+    }
+}

@@ -1,0 +1,109 @@
+using System;
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// Brings any humanoid skeleton (T-pose, A-pose or any bind pose) to a canonical T-pose: spine and neck
+    /// straight up, legs straight down, arms and hands horizontal along the body's left/right, facing +Z,
+    /// the lowest point of the legs on the floor (y = 0), the hips above the origin — then placed at a floor
+    /// position and facing given by a <see cref="Pose"/> (its rotation should be a yaw).
+    /// </summary>
+    /// <remarks>
+    /// Each limb segment is turned by the smallest rotation that takes it onto its target direction, parents
+    /// before children, so the twist of every bone is the bind pose's own. The body's facing is taken from
+    /// the rig: right = left hip → right hip (or shoulders), up = hips → head, forward = right × up.
+    /// </remarks>
+    public static class TPoser
+    {
+        /// <summary>Poses <paramref name="pose"/> (a pose buffer of <paramref name="map"/>'s skeleton) in the canonical T-pose at <paramref name="placement"/>.</summary>
+        /// <exception cref="ArgumentException">The rig lacks a required humanoid bone.</exception>
+        public static void Apply(HumanoidMap map, SkeletonPose pose, Pose placement)
+        {
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            if (pose == null || pose.Skeleton != map.Skeleton) throw new ArgumentException("The pose must belong to the map's skeleton.", nameof(pose));
+            var missing = map.MissingRequired();
+            if (missing.Count > 0) throw new ArgumentException($"The rig lacks required bones: {string.Join(", ", missing)}.", nameof(map));
+            Skeleton s = map.Skeleton;
+            pose.Origin = Pose.Identity;
+            pose.ResetToRest();
+            Pose[] w = pose.World;
+
+            // 1. Turn the whole body so that it faces +Z with its spine along +Y.
+            Vector3 right = w[map[HumanBone.RightUpperLeg]].Position - w[map[HumanBone.LeftUpperLeg]].Position;
+            if (right.LengthSquared() < 1e-8f) right = w[map[HumanBone.RightUpperArm]].Position - w[map[HumanBone.LeftUpperArm]].Position;
+            Vector3 up = w[map[HumanBone.Head]].Position - w[map[HumanBone.Hips]].Position;
+            Quaternion body = Rotations.LookRotation(Vector3.Cross(right, up), up);
+            RotateRoots(pose, Quaternion.Conjugate(body));
+
+            // 2. Straighten the chains.
+            HumanBone[] spine = { HumanBone.Spine, HumanBone.Chest, HumanBone.UpperChest, HumanBone.Neck, HumanBone.Head };
+            for (int i = 0; i < spine.Length - 1; i++)
+            {
+                if (!map.Has(spine[i])) continue;
+                for (int k = i + 1; k < spine.Length; k++)
+                    if (map.Has(spine[k])) { Align(map, pose, spine[i], spine[k], Vector3.UnitY); break; }
+            }
+            foreach (bool left in new[] { true, false })
+            {
+                Vector3 outward = left ? -Vector3.UnitX : Vector3.UnitX;
+                Align(map, pose, left ? HumanBone.LeftUpperLeg : HumanBone.RightUpperLeg, left ? HumanBone.LeftLowerLeg : HumanBone.RightLowerLeg, -Vector3.UnitY);
+                Align(map, pose, left ? HumanBone.LeftLowerLeg : HumanBone.RightLowerLeg, left ? HumanBone.LeftFoot : HumanBone.RightFoot, -Vector3.UnitY);
+                Align(map, pose, left ? HumanBone.LeftUpperArm : HumanBone.RightUpperArm, left ? HumanBone.LeftLowerArm : HumanBone.RightLowerArm, outward);
+                Align(map, pose, left ? HumanBone.LeftLowerArm : HumanBone.RightLowerArm, left ? HumanBone.LeftHand : HumanBone.RightHand, outward);
+                Align(map, pose, left ? HumanBone.LeftHand : HumanBone.RightHand, left ? HumanBone.LeftMiddleProximal : HumanBone.RightMiddleProximal, outward);
+            }
+
+            // 3. Stand on the floor, hips above the origin, then place.
+            float floor = float.MaxValue;
+            int leftLeg = map[HumanBone.LeftUpperLeg], rightLeg = map[HumanBone.RightUpperLeg];
+            for (int j = 0; j < s.JointCount; j++)
+                if (s.IsAncestorOrSelf(leftLeg, j) || s.IsAncestorOrSelf(rightLeg, j)) floor = Math.Min(floor, w[j].Position.Y);
+            Vector3 hips = w[map[HumanBone.Hips]].Position;
+            Vector3 shift = new Vector3(-hips.X, -floor, -hips.Z);
+            for (int j = 0; j < s.JointCount; j++)
+                if (s.GetParent(j) < 0) pose.Local[j] = placement * new Pose(pose.Local[j].Position + shift, pose.Local[j].Rotation);
+            pose.UpdateWorld();
+        }
+
+        /// <summary>
+        /// The height of the eyes above the floor for a skeleton posed by <see cref="Apply"/>: the midpoint of the
+        /// eye bones when the rig has them, otherwise the head joint plus <see cref="HeadToEyes"/> in the body frame.
+        /// </summary>
+        public static Vector3 EyePosition(HumanoidMap map, SkeletonPose pose, Quaternion bodyRotation)
+        {
+            if (map.Has(HumanBone.LeftEye) && map.Has(HumanBone.RightEye))
+                return (pose.World[map[HumanBone.LeftEye]].Position + pose.World[map[HumanBone.RightEye]].Position) * 0.5f;
+            return pose.World[map[HumanBone.Head]].Position + Vector3.Transform(HeadToEyes, bodyRotation);
+        }
+
+        /// <summary>
+        /// Where the eyes are relative to the head joint, in the body frame (x right, y up, z forward), for rigs
+        /// without eye bones: 7 cm up and 9 cm forward, the eye position relative to the top of the neck of an
+        /// adult head (head joints of common rigs sit at the skull base).
+        /// </summary>
+        public static readonly Vector3 HeadToEyes = new Vector3(0f, 0.07f, 0.09f);
+
+        private static void RotateRoots(SkeletonPose pose, Quaternion rotation)
+        {
+            Skeleton s = pose.Skeleton;
+            for (int j = 0; j < s.JointCount; j++)
+                if (s.GetParent(j) < 0)
+                    pose.Local[j] = new Pose(Vector3.Transform(pose.Local[j].Position, rotation), Quaternion.Normalize(rotation * pose.Local[j].Rotation));
+            pose.UpdateWorld();
+        }
+
+        private static void Align(HumanoidMap map, SkeletonPose pose, HumanBone bone, HumanBone child, Vector3 direction)
+        {
+            int j = map[bone], c = map[child];
+            if (j < 0 || c < 0) return;
+            Vector3 d = pose.World[c].Position - pose.World[j].Position;
+            if (d.LengthSquared() < 1e-10f) return;
+            Quaternion world = Quaternion.Normalize(Rotations.FromTo(d, direction) * pose.World[j].Rotation);
+            int parent = pose.Skeleton.GetParent(j);
+            Quaternion parentRotation = parent < 0 ? pose.Origin.Rotation : pose.World[parent].Rotation;
+            pose.Local[j] = pose.Local[j].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(parentRotation) * world));
+            pose.UpdateWorld();
+        }
+    }
+}

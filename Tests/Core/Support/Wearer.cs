@@ -1,0 +1,65 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>A synthetic wearer: a mocap skeleton in T-pose with virtual devices, streamed to a calibrator.</summary>
+    public sealed class Wearer
+    {
+        public readonly HumanoidMap Map;
+        public readonly SkeletonPose Pose;
+        public readonly VirtualDeviceRig Rig;
+        public readonly DeviceInfo[] Devices;
+        private readonly Random _rng;
+        private readonly Core.Pose[] _devicePoses = new Core.Pose[6];
+
+        public Wearer(string clip, int seed, DeviceMountings mountings = null)
+        {
+            BvhClip c = BvhReader.ReadFile(TestData.SharedMocap(clip), new BvhReadOptions { ToMetres = true });
+            Map = HumanoidNaming.Detect(c.Skeleton);
+            Pose = new SkeletonPose(c.Skeleton);
+            _rng = new Random(seed);
+            Rig = new VirtualDeviceRig(Map, mountings ?? DeviceMountings.Sample(_rng));
+            // Device order deliberately not role order: the calibrator must find the roles.
+            Devices = new[]
+            {
+                new DeviceInfo(4, DeviceClass.Tracker, "T-" + seed + "-a"),
+                new DeviceInfo(0, DeviceClass.Hmd, "H-" + seed),
+                new DeviceInfo(2, DeviceClass.Controller, "C-" + seed + "-b"),
+                new DeviceInfo(7, DeviceClass.Tracker, "T-" + seed + "-b"),
+                new DeviceInfo(1, DeviceClass.Controller, "C-" + seed + "-a"),
+                new DeviceInfo(9, DeviceClass.Tracker, "T-" + seed + "-c"),
+            };
+        }
+
+        /// <summary>Which role each device truly has, in <see cref="Devices"/> order.</summary>
+        public static readonly DeviceRole[] TrueRoles =
+            { DeviceRole.LeftFoot, DeviceRole.Head, DeviceRole.RightHand, DeviceRole.Pelvis, DeviceRole.LeftHand, DeviceRole.RightFoot };
+
+        public void StandInTPose(Core.Pose placement) => TPoser.Apply(Map, Pose, placement);
+
+        /// <summary>The device samples of the current pose, with noise, in <see cref="Devices"/> order.</summary>
+        public void Sample(DeviceSample[] samples, float positionNoise, float rotationNoiseDegrees)
+        {
+            Rig.Compute(Pose.World, _devicePoses);
+            VirtualDeviceRig.AddNoise(_devicePoses, _rng, positionNoise, rotationNoiseDegrees);
+            for (int i = 0; i < samples.Length; i++)
+                samples[i] = new DeviceSample(_devicePoses[Array.IndexOf(DeviceMountings.Roles, TrueRoles[i])], true);
+        }
+
+        /// <summary>Feeds 1 s at 90 Hz to the calibrator, with a trigger press on the last frame.</summary>
+        public void HoldAndPress(Calibrator calibrator, ref double time, float positionNoise, float rotationNoiseDegrees)
+        {
+            var samples = new DeviceSample[Devices.Length];
+            var none = new List<InputEvent>();
+            var press = new List<InputEvent> { new InputEvent(1, InputEventKind.TriggerPressed) };
+            for (int i = 0; i < 90; i++)
+            {
+                Sample(samples, positionNoise, rotationNoiseDegrees);
+                time += 1.0 / 90;
+                calibrator.Update(time, samples, i == 89 ? press : none);
+            }
+        }
+    }
+}
