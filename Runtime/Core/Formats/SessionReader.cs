@@ -15,17 +15,27 @@ namespace AvatarGo.Core
     public sealed class SessionReader : IDisposable
     {
         private const int MaxTokens = 16;
+        private const int MaxLineLength = 1 << 20;
+
+        /// <summary>|length² - 1| up to which a quaternion is taken as unit and kept bit for bit (float drift of a long chain of products).</summary>
+        private const float UnitTolerance = 1e-5f;
         private readonly TextReader _reader;
         private readonly bool _ownsReader;
         private readonly string _source;
         private readonly int[] _starts = new int[MaxTokens];
         private readonly int[] _lengths = new int[MaxTokens];
         private readonly bool[] _seen;
-        private string _line;
+        private readonly bool[] _seenInput;
+        private char[] _buffer = new char[1 << 14];
+        private int _bufferPos;
+        private int _bufferEnd;
+        private bool _endOfText;
+        private int _lineStart;
+        private int _lineLength;
         private int _tokenCount;
         private int _lineNumber;
-        private string _pending;
-        private int _pendingNumber;
+        private bool _unread;
+        private FormatException _failure;
         private double _lastTime = double.NegativeInfinity;
         private bool _ended;
         private readonly int _minor;
@@ -42,6 +52,7 @@ namespace AvatarGo.Core
             _ownsReader = ownsReader;
             Header = ReadHeader(out _minor);
             _seen = new bool[Header.Devices.Count];
+            _seenInput = new bool[Header.Devices.Count];
         }
 
         /// <summary>Opens a session file and reads its header.</summary>
@@ -61,11 +72,29 @@ namespace AvatarGo.Core
         /// Reads the next frame into <paramref name="frame"/>; false at the end of the session (after the
         /// end line has been checked against the frame count).
         /// </summary>
+        /// <remarks>
+        /// Allocates nothing. After a <see cref="FormatException"/> the content of <paramref name="frame"/> is undefined
+        /// and every later call throws the same error; the frames returned before it are whole and valid.
+        /// </remarks>
         /// <exception cref="FormatException">The frame is malformed, or the file ends without its end line (truncated).</exception>
         public bool ReadFrame(SessionFrame frame)
         {
             if (frame == null) throw new ArgumentNullException(nameof(frame));
             if (frame.Samples.Length != Header.Devices.Count) throw new ArgumentException("The frame was made for another header.", nameof(frame));
+            if (_failure != null) throw new FormatException(_failure.Message);
+            try
+            {
+                return ReadFrameCore(frame);
+            }
+            catch (FormatException e)
+            {
+                _failure = e; // the stream position is now unreliable: every later call reports the same problem
+                throw;
+            }
+        }
+
+        private bool ReadFrameCore(SessionFrame frame)
+        {
             if (_ended) return false;
             if (!NextLine()) throw Error(_lineNumber + 1, $"the file ends after {FrameCount} frames without its 'end' line (truncated?)");
             if (Is(0, "end"))
@@ -86,6 +115,7 @@ namespace AvatarGo.Core
             _lastTime = time;
             frame.Time = time;
             Array.Clear(_seen, 0, _seen.Length);
+            Array.Clear(_seenInput, 0, _seenInput.Length);
 
             while (NextLine())
             {
@@ -111,6 +141,8 @@ namespace AvatarGo.Core
                 {
                     Expect(4, "input ID TRIGGER GRIP");
                     int index = Device(1);
+                    if (_seenInput[index]) throw Error(_lineNumber, $"device {Header.Devices[index].Id} has two input lines in one frame");
+                    _seenInput[index] = true;
                     frame.Trigger[index] = Analog(2);
                     frame.Grip[index] = Analog(3);
                 }
@@ -125,6 +157,7 @@ namespace AvatarGo.Core
                 {
                     Expect(9, "truth BONE PX PY PZ QX QY QZ QW");
                     if (!TryBone(Token(1), out HumanBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Token(1).ToString()}'");
+                    if (frame.HasTruth[(int)bone]) throw Error(_lineNumber, $"bone {SessionText.BoneName(bone)} has two truth poses in one frame");
                     frame.Truth[(int)bone] = ReadPose(2, true);
                     frame.HasTruth[(int)bone] = true;
                 }
@@ -132,7 +165,7 @@ namespace AvatarGo.Core
                 else throw Error(_lineNumber, $"unknown line '{Token(0).ToString()}' in a frame");
             }
             for (int i = 0; i < _seen.Length; i++)
-                if (!_seen[i]) throw Error(_pending != null ? _pendingNumber : _lineNumber + 1, $"the frame at line {frameLine} has no pose for device {Header.Devices[i].Id}{(_pending == null ? " (truncated?)" : "")}");
+                if (!_seen[i]) throw Error(_unread ? _lineNumber : _lineNumber + 1, $"the frame at line {frameLine} has no pose for device {Header.Devices[i].Id}{(_unread ? "" : " (truncated?)")}");
             FrameCount++;
             return true;
         }
@@ -171,20 +204,23 @@ namespace AvatarGo.Core
                 if (Is(0, "end-header")) break;
                 if (Is(0, "units"))
                 {
+                    if (units) throw Error(_lineNumber, "a second 'units' line");
                     Expect(3, "units m s");
                     if (!Is(1, "m") || !Is(2, "s")) throw Error(_lineNumber, "only 'units m s' (metres, seconds) is defined");
                     units = true;
                 }
                 else if (Is(0, "handedness"))
                 {
+                    if (handedness) throw Error(_lineNumber, "a second 'handedness' line");
                     Expect(4, "handedness left y-up z-forward");
                     if (!Is(1, "left") || !Is(2, "y-up") || !Is(3, "z-forward")) throw Error(_lineNumber, "only 'handedness left y-up z-forward' (Unity's frame) is defined");
                     handedness = true;
                 }
                 else if (Is(0, "rate"))
                 {
+                    if (!float.IsNaN(rate)) throw Error(_lineNumber, "a second 'rate' line");
                     Expect(2, "rate HZ");
-                    rate = (float)Double(1);
+                    rate = Float(1);
                     if (!(rate > 0f)) throw Error(_lineNumber, "the rate must be positive");
                 }
                 else if (Is(0, "device"))
@@ -203,6 +239,7 @@ namespace AvatarGo.Core
                     Expect(3, "truth-role ID ROLE");
                     int id = Int(1);
                     if (!SessionText.TryRole(Token(2), out DeviceRole role)) throw Error(_lineNumber, $"unknown role '{Token(2).ToString()}'");
+                    if (trueRoles.ContainsKey(id)) throw Error(_lineNumber, $"device {id} has two truth-role lines");
                     trueRoles[id] = role;
                 }
                 else if (Is(0, "truth-joint"))
@@ -249,19 +286,30 @@ namespace AvatarGo.Core
                     if (!known) throw Error(_lineNumber, $"truth-role names unknown device {id}");
                 }
             }
-            HumanoidMap truth = null;
-            if (names.Count > 0) truth = new HumanoidMap(new Skeleton(names, parents, rest, endSites), bones);
-            return new SessionHeader(rate, devices, roles, truth);
+            try
+            {
+                HumanoidMap truth = null;
+                if (names.Count > 0) truth = new HumanoidMap(new Skeleton(names, parents, rest, endSites), bones);
+                return new SessionHeader(rate, devices, roles, truth);
+            }
+            catch (ArgumentException e)
+            {
+                // The checks above should leave nothing for the constructors to reject; if one does, it is still bad content.
+                throw Error(_lineNumber, "the header is inconsistent: " + e.Message.Split('\n')[0].TrimEnd('\r'));
+            }
         }
 
         private Pose ReadPose(int first, bool mustBeValid)
         {
             var position = new Vector3(Float(first), Float(first + 1), Float(first + 2));
             var rotation = new Quaternion(Float(first + 3), Float(first + 4), Float(first + 5), Float(first + 6));
-            float length = rotation.Length();
-            if (mustBeValid && Math.Abs(length - 1f) > 1e-3f)
-                throw Error(_lineNumber, $"rotation ({rotation.X}, {rotation.Y}, {rotation.Z}, {rotation.W}) is not a unit quaternion");
-            return new Pose(position, length > 1e-6f ? Quaternion.Multiply(rotation, 1f / length) : Quaternion.Identity);
+            float lengthSquared = rotation.LengthSquared();
+            if (mustBeValid && !Rotations.IsUnit(rotation))
+                throw Error(_lineNumber, $"rotation ({Token(first + 3).ToString()} {Token(first + 4).ToString()} {Token(first + 5).ToString()} {Token(first + 6).ToString()}) is not a unit quaternion (length within 1e-3 of 1)");
+            // Quaternions already unit to float precision keep their exact bits (a write/read round trip is exact);
+            // others are renormalised, and a (nearly) zero one in a lost sample becomes the identity.
+            if (MathF.Abs(lengthSquared - 1f) > UnitTolerance) rotation = Rotations.NormalizeOr(rotation, Quaternion.Identity);
+            return new Pose(position, rotation);
         }
 
         private float Analog(int i)
@@ -280,61 +328,74 @@ namespace AvatarGo.Core
             return index;
         }
 
-        private static readonly string[] BoneNames = BuildBoneNames();
-
-        private static string[] BuildBoneNames()
-        {
-            var names = new string[HumanBones.Count];
-            for (int b = 0; b < names.Length; b++) names[b] = ((HumanBone)b).ToString();
-            return names;
-        }
-
-        private static bool TryBone(ReadOnlySpan<char> s, out HumanBone bone)
-        {
-            for (int b = 0; b < BoneNames.Length; b++)
-                if (s.SequenceEqual(BoneNames[b].AsSpan())) { bone = (HumanBone)b; return true; }
-            bone = HumanBone.LastBone;
-            return false;
-        }
+        private static bool TryBone(ReadOnlySpan<char> s, out HumanBone bone) => SessionText.TryBone(s, out bone);
 
         private bool NextLine()
         {
-            if (_pending != null)
+            if (_unread)
             {
-                _line = _pending;
-                _lineNumber = _pendingNumber;
-                _pending = null;
-                Tokenise();
+                _unread = false;
                 return true;
             }
-            while (true)
+            while (ReadRawLine())
             {
-                string line = _reader.ReadLine();
-                if (line == null) return false;
-                _lineNumber++;
-                _line = line;
                 Tokenise();
-                if (_tokenCount > 0 && _line[_starts[0]] != '#') return true;
+                if (_tokenCount > 0 && _buffer[_starts[0]] != '#') return true;
             }
+            return false;
         }
 
-        private void Unread()
+        /// <summary>Makes the next <see cref="NextLine"/> return the current line again (its tokens are kept).</summary>
+        private void Unread() => _unread = true;
+
+        /// <summary>
+        /// The next physical line into <c>_buffer[_lineStart.._lineStart+_lineLength)</c>, without its LF or CRLF,
+        /// and counts it; false at the end of the text. Reads the text in blocks into one reused buffer, so
+        /// a line costs no allocation (the buffer only grows for a line longer than it).
+        /// </summary>
+        private bool ReadRawLine()
         {
-            _pending = _line;
-            _pendingNumber = _lineNumber;
+            while (true)
+            {
+                int newline = _buffer.AsSpan(_bufferPos, _bufferEnd - _bufferPos).IndexOf('\n');
+                if (newline >= 0 || (_endOfText && _bufferPos < _bufferEnd))
+                {
+                    int end = newline >= 0 ? _bufferPos + newline : _bufferEnd;
+                    _lineStart = _bufferPos;
+                    _bufferPos = newline >= 0 ? end + 1 : end;
+                    if (end > _lineStart && _buffer[end - 1] == '\r') end--;
+                    _lineLength = end - _lineStart;
+                    _lineNumber++;
+                    return true;
+                }
+                if (_endOfText) return false;
+                int remaining = _bufferEnd - _bufferPos;
+                if (remaining >= MaxLineLength) throw Error(_lineNumber + 1, $"a line longer than {MaxLineLength} characters (not a session file?)");
+                if (_bufferPos > 0)
+                {
+                    Array.Copy(_buffer, _bufferPos, _buffer, 0, remaining);
+                    _bufferPos = 0;
+                    _bufferEnd = remaining;
+                }
+                if (_bufferEnd == _buffer.Length) Array.Resize(ref _buffer, _buffer.Length * 2);
+                int read = _reader.Read(_buffer, _bufferEnd, _buffer.Length - _bufferEnd);
+                if (read <= 0) _endOfText = true;
+                else _bufferEnd += read;
+            }
         }
 
         private void Tokenise()
         {
             _tokenCount = 0;
-            int pos = 0;
-            string s = _line;
-            while (pos < s.Length)
+            int pos = _lineStart;
+            int end = _lineStart + _lineLength;
+            char[] s = _buffer;
+            while (pos < end)
             {
-                while (pos < s.Length && char.IsWhiteSpace(s[pos])) pos++;
-                if (pos >= s.Length) break;
+                while (pos < end && char.IsWhiteSpace(s[pos])) pos++;
+                if (pos >= end) break;
                 int start = pos;
-                while (pos < s.Length && !char.IsWhiteSpace(s[pos])) pos++;
+                while (pos < end && !char.IsWhiteSpace(s[pos])) pos++;
                 if (_tokenCount == MaxTokens) { _tokenCount++; return; }
                 _starts[_tokenCount] = start;
                 _lengths[_tokenCount] = pos - start;
@@ -347,7 +408,7 @@ namespace AvatarGo.Core
             if (_tokenCount != count) throw Error(_lineNumber, $"expected '{form}' ({count} fields), found {Math.Min(_tokenCount, MaxTokens + 1)}{(_tokenCount > MaxTokens ? "+" : "")} fields");
         }
 
-        private ReadOnlySpan<char> Token(int i) => i < Math.Min(_tokenCount, MaxTokens) ? _line.AsSpan(_starts[i], _lengths[i]) : ReadOnlySpan<char>.Empty;
+        private ReadOnlySpan<char> Token(int i) => i < Math.Min(_tokenCount, MaxTokens) ? _buffer.AsSpan(_starts[i], _lengths[i]) : ReadOnlySpan<char>.Empty;
 
         private bool Is(int i, string word) => Token(i).SequenceEqual(word.AsSpan());
 

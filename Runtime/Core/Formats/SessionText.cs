@@ -1,5 +1,4 @@
 using System;
-using System.Globalization;
 
 namespace AvatarGo.Core
 {
@@ -42,9 +41,25 @@ namespace AvatarGo.Core
             return false;
         }
 
-        public static string F(float v) => v.ToString("R", CultureInfo.InvariantCulture);
+        private static readonly string[] BoneNames = BuildBoneNames();
 
-        public static string F(double v) => v.ToString("R", CultureInfo.InvariantCulture);
+        private static string[] BuildBoneNames()
+        {
+            var names = new string[HumanBones.Count];
+            for (int b = 0; b < names.Length; b++) names[b] = ((HumanBone)b).ToString();
+            return names;
+        }
+
+        /// <summary>The Unity HumanBodyBones name of a bone, without allocating.</summary>
+        public static string BoneName(HumanBone bone) => BoneNames[(int)bone];
+
+        public static bool TryBone(ReadOnlySpan<char> s, out HumanBone bone)
+        {
+            for (int b = 0; b < BoneNames.Length; b++)
+                if (s.SequenceEqual(BoneNames[b].AsSpan())) { bone = (HumanBone)b; return true; }
+            bone = HumanBone.LastBone;
+            return false;
+        }
 
         /// <summary>True when <paramref name="s"/> can stand as one token (non-empty, no white space).</summary>
         public static bool IsToken(string s)

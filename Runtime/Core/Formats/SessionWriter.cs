@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Globalization;
 using System.Text;
 
 namespace AvatarGo.Core
@@ -13,7 +14,8 @@ namespace AvatarGo.Core
     {
         private readonly TextWriter _writer;
         private readonly bool _ownsWriter;
-        private readonly StringBuilder _line = new StringBuilder(128);
+        private char[] _line = new char[256];
+        private int _length;
         private double _lastTime = double.NegativeInfinity;
         private bool _completed;
 
@@ -41,9 +43,14 @@ namespace AvatarGo.Core
         /// <summary>The number of frames written.</summary>
         public int FrameCount { get; private set; }
 
-        /// <summary>Writes one frame.</summary>
+        /// <summary>
+        /// Writes one frame: its time, one pose line per device (in header order), an input line per device that
+        /// has an analog value, its events and its ground-truth joints. Allocates nothing (lines are formatted
+        /// into a reused buffer). A lost sample whose pose is not finite is written as the identity pose.
+        /// </summary>
         /// <exception cref="ArgumentException">The frame is for another header, its time goes backwards or is not finite,
-        /// an event names an unknown device, or a tracked pose is not valid.</exception>
+        /// an event names an unknown device, or a tracked pose or a truth pose is not valid (<see cref="Pose.IsValid"/>).</exception>
+        /// <exception cref="InvalidOperationException">The session is already complete.</exception>
         public void WriteFrame(SessionFrame frame)
         {
             if (frame == null) throw new ArgumentNullException(nameof(frame));
@@ -51,37 +58,33 @@ namespace AvatarGo.Core
             if (frame.Samples.Length != Header.Devices.Count) throw new ArgumentException("The frame was made for another header.", nameof(frame));
             if (double.IsNaN(frame.Time) || double.IsInfinity(frame.Time) || frame.Time < _lastTime)
                 throw new ArgumentException($"Frame time {frame.Time} is not finite or goes backwards (previous {_lastTime}).", nameof(frame));
+            // Check everything before writing anything, so that a rejected frame leaves the file valid.
+            for (int i = 0; i < frame.Samples.Length; i++)
+                if (frame.Samples[i].IsTracked && !frame.Samples[i].Pose.IsValid)
+                    throw new ArgumentException($"Device {Header.Devices[i].Id} is tracked with an invalid pose {frame.Samples[i].Pose}.", nameof(frame));
+            for (int k = 0; k < frame.Events.Count; k++)
+                if (Header.IndexOf(frame.Events[k].DeviceId) < 0) throw new ArgumentException($"Event from unknown device {frame.Events[k].DeviceId}.", nameof(frame));
+            for (int b = 0; b < frame.HasTruth.Length; b++)
+                if (frame.HasTruth[b] && !frame.Truth[b].IsValid) throw new ArgumentException($"Truth pose of {(HumanBone)b} is not valid: {frame.Truth[b]}.", nameof(frame));
             _lastTime = frame.Time;
 
-            _writer.WriteLine("frame " + SessionText.F(frame.Time));
+            Begin("frame ").Append(frame.Time).EndLine();
             for (int i = 0; i < frame.Samples.Length; i++)
             {
                 DeviceSample s = frame.Samples[i];
                 Pose p = s.Pose;
-                if (s.IsTracked && !p.IsValid) throw new ArgumentException($"Device {Header.Devices[i].Id} is tracked with an invalid pose {p}.", nameof(frame));
                 if (!s.IsTracked && !(Vectors.IsFinite(p.Position) && Rotations.IsFinite(p.Rotation))) p = Pose.Identity;
-                _line.Clear().Append("pose ").Append(Header.Devices[i].Id).Append(s.IsTracked ? " tracked " : " lost ");
-                AppendPose(p);
-                _writer.WriteLine(_line.ToString());
+                Begin("pose ").Append(Header.Devices[i].Id).Append(s.IsTracked ? " tracked " : " lost ").Append(p).EndLine();
                 if (!float.IsNaN(frame.Trigger[i]) || !float.IsNaN(frame.Grip[i]))
-                {
-                    _line.Clear().Append("input ").Append(Header.Devices[i].Id).Append(' ')
-                        .Append(Analog(frame.Trigger[i])).Append(' ').Append(Analog(frame.Grip[i]));
-                    _writer.WriteLine(_line.ToString());
-                }
+                    Begin("input ").Append(Header.Devices[i].Id).Append(" ").AppendAnalog(frame.Trigger[i]).Append(" ").AppendAnalog(frame.Grip[i]).EndLine();
             }
-            foreach (InputEvent e in frame.Events)
+            for (int k = 0; k < frame.Events.Count; k++)
             {
-                if (Header.IndexOf(e.DeviceId) < 0) throw new ArgumentException($"Event from unknown device {e.DeviceId}.", nameof(frame));
-                _writer.WriteLine("event " + e.DeviceId + " " + SessionText.EventName(e.Kind));
+                InputEvent e = frame.Events[k];
+                Begin("event ").Append(e.DeviceId).Append(" ").Append(SessionText.EventName(e.Kind)).EndLine();
             }
             for (int b = 0; b < frame.HasTruth.Length; b++)
-            {
-                if (!frame.HasTruth[b]) continue;
-                _line.Clear().Append("truth ").Append(((HumanBone)b).ToString()).Append(' ');
-                AppendPose(frame.Truth[b]);
-                _writer.WriteLine(_line.ToString());
-            }
+                if (frame.HasTruth[b]) Begin("truth ").Append(SessionText.BoneName((HumanBone)b)).Append(" ").Append(frame.Truth[b]).EndLine();
             FrameCount++;
         }
 
@@ -90,7 +93,7 @@ namespace AvatarGo.Core
         {
             if (_completed) return;
             _completed = true;
-            _writer.WriteLine("end " + FrameCount);
+            Begin("end ").Append(FrameCount).EndLine();
             _writer.Flush();
         }
 
@@ -101,30 +104,78 @@ namespace AvatarGo.Core
             if (_ownsWriter) _writer.Dispose();
         }
 
-        private static string Analog(float v) => float.IsNaN(v) ? "-" : SessionText.F(Math.Max(0f, Math.Min(1f, v)));
-
-        private void AppendPose(Pose p)
+        private SessionWriter Begin(string keyword)
         {
-            _line.Append(SessionText.F(p.Position.X)).Append(' ').Append(SessionText.F(p.Position.Y)).Append(' ').Append(SessionText.F(p.Position.Z)).Append(' ')
-                .Append(SessionText.F(p.Rotation.X)).Append(' ').Append(SessionText.F(p.Rotation.Y)).Append(' ')
-                .Append(SessionText.F(p.Rotation.Z)).Append(' ').Append(SessionText.F(p.Rotation.W));
+            _length = 0;
+            return Append(keyword);
+        }
+
+        private SessionWriter Append(string text)
+        {
+            Ensure(text.Length);
+            text.CopyTo(0, _line, _length, text.Length);
+            _length += text.Length;
+            return this;
+        }
+
+        private SessionWriter Append(int v)
+        {
+            int written;
+            while (!v.TryFormat(_line.AsSpan(_length), out written, default, CultureInfo.InvariantCulture)) Ensure(_line.Length);
+            _length += written;
+            return this;
+        }
+
+        // "R": the shortest text that parses back to the same float/double (exact round trip).
+        private SessionWriter Append(float v)
+        {
+            int written;
+            while (!v.TryFormat(_line.AsSpan(_length), out written, "R".AsSpan(), CultureInfo.InvariantCulture)) Ensure(_line.Length);
+            _length += written;
+            return this;
+        }
+
+        private SessionWriter Append(double v)
+        {
+            int written;
+            while (!v.TryFormat(_line.AsSpan(_length), out written, "R".AsSpan(), CultureInfo.InvariantCulture)) Ensure(_line.Length);
+            _length += written;
+            return this;
+        }
+
+        private SessionWriter AppendAnalog(float v) => float.IsNaN(v) ? Append("-") : Append(Math.Max(0f, Math.Min(1f, v)));
+
+        private SessionWriter Append(Pose p) =>
+            Append(p.Position.X).Append(" ").Append(p.Position.Y).Append(" ").Append(p.Position.Z).Append(" ")
+                .Append(p.Rotation.X).Append(" ").Append(p.Rotation.Y).Append(" ").Append(p.Rotation.Z).Append(" ").Append(p.Rotation.W);
+
+        private void EndLine()
+        {
+            Append("\n");
+            _writer.Write(_line, 0, _length);
+        }
+
+        private void Ensure(int extra)
+        {
+            if (_length + extra > _line.Length) Array.Resize(ref _line, Math.Max(_line.Length * 2, _length + extra));
         }
 
         private void WriteHeader()
         {
-            _writer.WriteLine($"{SessionText.Magic} {SessionHeader.FormatVersion.Major}.{SessionHeader.FormatVersion.Minor}");
-            _writer.WriteLine("units m s");
-            _writer.WriteLine("handedness left y-up z-forward");
-            _writer.WriteLine("rate " + SessionText.F(Header.Rate));
+            Begin(SessionText.Magic).Append(" ").Append(SessionHeader.FormatVersion.Major).Append(".").Append(SessionHeader.FormatVersion.Minor).EndLine();
+            Begin("units m s").EndLine();
+            Begin("handedness left y-up z-forward").EndLine();
+            Begin("rate ").Append(Header.Rate).EndLine();
             foreach (DeviceInfo d in Header.Devices)
             {
                 string serial = d.Serial.Length == 0 ? "-" : d.Serial;
                 if (!SessionText.IsToken(serial)) throw new ArgumentException($"Serial '{d.Serial}' of device {d.Id} contains white space.");
-                _writer.WriteLine($"device {d.Id} {SessionText.ClassName(d.Class)} {serial} {SessionText.RoleName(d.RuntimeRole)}");
+                Begin("device ").Append(d.Id).Append(" ").Append(SessionText.ClassName(d.Class)).Append(" ").Append(serial).Append(" ")
+                    .Append(SessionText.RoleName(d.RuntimeRole)).EndLine();
             }
             if (Header.HasTrueRoles)
                 for (int i = 0; i < Header.Devices.Count; i++)
-                    _writer.WriteLine($"truth-role {Header.Devices[i].Id} {SessionText.RoleName(Header.TrueRole(i))}");
+                    Begin("truth-role ").Append(Header.Devices[i].Id).Append(" ").Append(SessionText.RoleName(Header.TrueRole(i))).EndLine();
             HumanoidMap map = Header.TruthHumanoid;
             if (map != null)
             {
@@ -133,15 +184,15 @@ namespace AvatarGo.Core
                 {
                     string name = s.GetName(j);
                     if (!SessionText.IsToken(name)) throw new ArgumentException($"Joint name '{name}' contains white space.");
+                    Pose rest = s.GetRestLocal(j);
+                    if (!rest.IsValid) throw new ArgumentException($"Joint '{name}' has an invalid rest pose {rest}.");
                     HumanBone bone = map.BoneOf(j);
-                    _line.Clear().Append("truth-joint ").Append(j).Append(' ').Append(s.GetParent(j)).Append(' ')
-                        .Append(bone == HumanBone.LastBone ? "-" : bone.ToString()).Append(' ').Append(s.IsEndSite(j) ? "end " : "joint ")
-                        .Append(name).Append(' ');
-                    AppendPose(s.GetRestLocal(j));
-                    _writer.WriteLine(_line.ToString());
+                    Begin("truth-joint ").Append(j).Append(" ").Append(s.GetParent(j)).Append(" ")
+                        .Append(bone == HumanBone.LastBone ? "-" : SessionText.BoneName(bone)).Append(s.IsEndSite(j) ? " end " : " joint ")
+                        .Append(name).Append(" ").Append(rest).EndLine();
                 }
             }
-            _writer.WriteLine("end-header");
+            Begin("end-header").EndLine();
         }
     }
 }

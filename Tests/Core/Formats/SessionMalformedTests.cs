@@ -115,6 +115,211 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void MoreFrameContentProblems()
+        {
+            var l = ValidLines(); int i = IndexOf(l, "pose 1", 1);
+            l[i] = "pose 1 tracked 0 NaN 0 0 0 0 1";
+            AssertFailsAtLine(l, i + 1, "NaN position");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l[i] = "pose 1 tracked 0 1 0 0 0 0 1e40";
+            AssertFailsAtLine(l, i + 1, "overflows a float");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l[i] = "pose 1 tracked 0 1 0 0 0 0 0.9";
+            AssertFailsAtLine(l, i + 1, "not a unit quaternion");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l.Insert(i + 1, l[i]);
+            AssertFailsAtLine(l, i + 2, "two poses of one device");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l.Insert(i + 1, "input 1 0.5 1.5");
+            AssertFailsAtLine(l, i + 2, "analog value above 1");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l.Insert(i + 1, "input 1 0.5 -"); l.Insert(i + 2, "input 1 0.5 -");
+            AssertFailsAtLine(l, i + 3, "two input lines");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l.Insert(i + 1, "truth LeftElbow 0 1 0 0 0 0 1");
+            AssertFailsAtLine(l, i + 2, "not a HumanBodyBones name");
+            l = ValidLines(); i = IndexOf(l, "pose 1", 1);
+            l.Insert(i + 1, "wobble 3");
+            AssertFailsAtLine(l, i + 2, "unknown line in this minor version");
+            l = ValidLines(); i = IndexOf(l, "frame", 1);
+            l[i] = "frame Infinity";
+            AssertFailsAtLine(l, i + 1, "infinite time");
+            l = ValidLines(); i = l.Count - 1;
+            l.Add("frame 9");
+            AssertFailsAtLine(l, i + 2, "content after the end line");
+        }
+
+        [Test]
+        public void MoreHeaderProblems()
+        {
+            var l = ValidLines(); int i = IndexOf(l, "rate");
+            l[i] = "rate 1e300";
+            AssertFailsAtLine(l, i + 1, "rate overflows a float");
+            l = ValidLines(); i = IndexOf(l, "rate");
+            l[i] = "rate 0";
+            AssertFailsAtLine(l, i + 1, "zero rate");
+            l = ValidLines(); i = IndexOf(l, "device 1");
+            l.Insert(i + 1, "device 1 tracker X none");
+            AssertFailsAtLine(l, i + 2, "device id used twice");
+            l = ValidLines(); i = IndexOf(l, "end-header");
+            l.Insert(i, "truth-role 0 head");
+            AssertFailsAtLine(l, i + 2, "a true role for device 0 only (reported at end-header)");
+            l = ValidLines(); i = IndexOf(l, "end-header");
+            l.Insert(i, "truth-joint 0 -1 Hips joint Hips 0 1 0 0 0 0 1");
+            l.Insert(i + 1, "truth-joint 1 0 - joint Hips 0 1 0 0 0 0 1");
+            AssertFailsAtLine(l, i + 2, "joint name used twice");
+            l = ValidLines(); i = IndexOf(l, "end-header");
+            l.Insert(i, "truth-joint 0 -1 Hips joint Hips 0 1 0 0 0 0 1");
+            l.Insert(i + 1, "truth-joint 1 3 - joint Spine 0 1 0 0 0 0 1");
+            AssertFailsAtLine(l, i + 2, "parent after child");
+            l = ValidLines(); i = IndexOf(l, "rate");
+            l.Insert(i + 1, "rate 72");
+            AssertFailsAtLine(l, i + 2, "a second rate line");
+            l = ValidLines(); l[0] = "avatargo-session 1";
+            AssertFailsAtLine(l, 1, "version without minor");
+            l = ValidLines(); l[0] = "bvh-session 1.0";
+            AssertFailsAtLine(l, 1, "another format");
+        }
+
+        [Test]
+        public void ErrorsAreOneLineAndNameSourceLineAndVersion()
+        {
+            var l = ValidLines(); l[0] = "avatargo-session 3.1";
+            var e = Assert.Throws<FormatException>(() => new SessionReader(new StringReader(string.Join("\n", l)), "future.agsession"));
+            Assert.That(e.Message, Is.EqualTo("future.agsession:1: format version 3.1 is not supported (this reader reads 1.x)"));
+        }
+
+        [Test]
+        public void ANewerMinorVersionsUnknownLinesAreSkipped()
+        {
+            var l = ValidLines(); l[0] = "avatargo-session 1.7";
+            l.Insert(IndexOf(l, "end-header"), "colour 0 red");
+            int i = IndexOf(l, "pose 1", 2);
+            l.Insert(i + 1, "haptics 1 0.5 0.1");
+            using var r = new SessionReader(new StringReader(string.Join("\n", l)), "newer");
+            var f = r.CreateFrame();
+            int n = 0;
+            while (r.ReadFrame(f)) n++;
+            Assert.That(n, Is.EqualTo(5));
+        }
+
+        [Test]
+        public void CrlfTabsCommentsAndNoFinalNewlineReadTheSame()
+        {
+            var l = ValidLines();
+            var edited = new List<string>();
+            for (int i = 0; i < l.Count; i++)
+            {
+                if (i == 3) edited.Add("# a comment line");
+                if (i == 6) edited.Add("   ");
+                edited.Add(i % 2 == 0 ? l[i].Replace(" ", " \t ") : l[i]);
+            }
+            string lf = string.Join("\n", l) + "\n", crlf = string.Join("\r\n", edited);
+            using var a = new SessionReader(new StringReader(lf), "lf");
+            using var b = new SessionReader(new StringReader(crlf), "crlf");
+            SessionFrame fa = a.CreateFrame(), fb = b.CreateFrame();
+            int n = 0;
+            while (a.ReadFrame(fa))
+            {
+                Assert.That(b.ReadFrame(fb), Is.True);
+                Assert.That(fb.Time, Is.EqualTo(fa.Time));
+                for (int d = 0; d < 2; d++) Assert.That(fb.Samples[d].Pose.Rotation, Is.EqualTo(fa.Samples[d].Pose.Rotation));
+                Assert.That(fb.Events.Count, Is.EqualTo(fa.Events.Count));
+                n++;
+            }
+            Assert.That(b.ReadFrame(fb), Is.False);
+            Assert.That(n, Is.EqualTo(5));
+        }
+
+        [Test]
+        public void ARotationSlightlyOffUnitIsRenormalisedAndAZeroOneInALostSampleBecomesIdentity()
+        {
+            var l = ValidLines(); int i = IndexOf(l, "pose 1", 1);
+            l[i] = "pose 1 tracked 0 1 0 0 0.6006 0 0.8";
+            int j = IndexOf(l, "pose 0", 1);
+            l[j] = "pose 0 lost 0 1.7 0 0 0 0 0";
+            using var r = new SessionReader(new StringReader(string.Join("\n", l)), "renorm");
+            var f = r.CreateFrame();
+            r.ReadFrame(f); r.ReadFrame(f);
+            Assert.That(f.Samples[1].Pose.Rotation.Length(), Is.EqualTo(1f).Within(1e-6f), "renormalised");
+            Assert.That(f.Samples[1].Pose.Rotation.Y, Is.EqualTo(0.6006f / MathF.Sqrt(0.6006f * 0.6006f + 0.64f)).Within(1e-6f));
+            Assert.That(f.Samples[0].Pose.Rotation, Is.EqualTo(Quaternion.Identity));
+            Assert.That(f.Samples[0].Pose.Position, Is.EqualTo(new Vector3(0, 1.7f, 0)), "a lost sample keeps its position");
+        }
+
+        [Test]
+        public void ATruncatedRecordingGivesEveryWholeFrameThenKeepsFailing()
+        {
+            // A recorder that crashed: the file stops after frame 3's lines, with no 'end' line.
+            var l = ValidLines();
+            int cut = IndexOf(l, "frame", 3);
+            using var r = new SessionReader(new StringReader(string.Join("\n", l.Take(cut))), "crash.agsession");
+            var f = r.CreateFrame();
+            int n = 0;
+            FormatException e = null;
+            try { while (r.ReadFrame(f)) n++; }
+            catch (FormatException x) { e = x; }
+            Assert.That(n, Is.EqualTo(3), "frames 0..2 are whole and delivered");
+            Assert.That(e, Is.Not.Null);
+            StringAssert.StartsWith($"crash.agsession:{cut + 1}: ", e.Message);
+            var again = Assert.Throws<FormatException>(() => r.ReadFrame(f));
+            Assert.That(again.Message, Is.EqualTo(e.Message), "a failed reader does not carry on from an unreliable position");
+        }
+
+        [Test]
+        public void RandomDamageNeverGivesAnotherExceptionType()
+        {
+            // 3000 randomly damaged copies (a character deleted, replaced or inserted, a line dropped or doubled,
+            // the text cut anywhere): each either reads or fails with a FormatException naming a line; never
+            // IndexOutOfRange, ArgumentException or the like.
+            var valid = ValidLines();
+            valid.Insert(IndexOf(valid, "end-header"), "truth-joint 0 -1 Hips joint Hips 0 1 0 0 0 0 1");
+            valid.Insert(IndexOf(valid, "end-header"), "truth-joint 1 0 Head end Head 0 0.6 0 0 0 0 1");
+            valid.Insert(IndexOf(valid, "pose 1", 2) + 1, "truth Head 0 1.6 0 0 0 0 1");
+            valid.Insert(IndexOf(valid, "pose 1", 3) + 1, "input 1 0.25 -");
+            string text = string.Join("\n", valid) + "\n";
+            const string alphabet = " \t\n\r#-.0123456789eEaNfIlosttrackedpose";
+            var rng = new Random(1234);
+            int failures = 0;
+            for (int n = 0; n < 3000; n++)
+            {
+                var damaged = new System.Text.StringBuilder(text);
+                int edits = 1 + rng.Next(3);
+                for (int k = 0; k < edits && damaged.Length > 0; k++)
+                {
+                    int at = rng.Next(damaged.Length);
+                    switch (rng.Next(5))
+                    {
+                        case 0: damaged.Remove(at, 1); break;
+                        case 1: damaged[at] = alphabet[rng.Next(alphabet.Length)]; break;
+                        case 2: damaged.Insert(at, alphabet[rng.Next(alphabet.Length)]); break;
+                        case 3: damaged.Length = at; break;
+                        default:
+                            var lines = damaged.ToString().Split('\n').ToList();
+                            int li = rng.Next(lines.Count);
+                            if (rng.Next(2) == 0) lines.RemoveAt(li); else lines.Insert(li, lines[li]);
+                            damaged.Clear().Append(string.Join("\n", lines));
+                            break;
+                    }
+                }
+                try
+                {
+                    using var r = new SessionReader(new StringReader(damaged.ToString()), "fuzz");
+                    var f = r.CreateFrame();
+                    while (r.ReadFrame(f))
+                        for (int d = 0; d < f.Samples.Length; d++)
+                            Assert.That(f.Samples[d].Pose.IsValid, Is.True, "every delivered pose is valid, tracked or not");
+                }
+                catch (FormatException e)
+                {
+                    failures++;
+                    StringAssert.IsMatch(@"^fuzz:\d+: \S", e.Message);
+                }
+            }
+            Assert.That(failures, Is.GreaterThan(2000), "most damage is detected (the rest: e.g. a changed digit)");
+        }
+
+        [Test]
         public void UntrackedZeroQuaternionIsAccepted()
         {
             var l = ValidLines(); int i = IndexOf(l, "pose 0", 2);

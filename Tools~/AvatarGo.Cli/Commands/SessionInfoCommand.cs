@@ -14,8 +14,8 @@ public sealed class SessionInfoCommand : ICommand
 
         Reads a session (AvatarGo session format v1, Documentation~/session-format.md) from start to
         end, streaming, and prints its devices (id, class, serial, runtime role and, for synthetic
-        sessions, true role), nominal rate, frame count, duration, trigger events and whether it
-        carries ground truth.
+        sessions, true role) with the share of frames each is tracked, nominal rate, frame count,
+        duration, trigger events and whether it carries ground truth.
         Exit codes: 0 ok, 1 unreadable or malformed file (one-line message naming the line), 2 bad arguments.
         """;
 
@@ -28,6 +28,8 @@ public sealed class SessionInfoCommand : ICommand
         SessionHeader h = reader.Header;
         SessionFrame frame = reader.CreateFrame();
         int presses = 0, releases = 0, truthFrames = 0;
+        var tracked = new int[h.Devices.Count];
+        var analog = new int[h.Devices.Count];
         double first = double.NaN, last = double.NaN;
         while (reader.ReadFrame(frame))
         {
@@ -36,6 +38,11 @@ public sealed class SessionInfoCommand : ICommand
             foreach (InputEvent e in frame.Events)
                 if (e.Kind == InputEventKind.TriggerPressed) presses++; else releases++;
             if (System.Array.IndexOf(frame.HasTruth, true) >= 0) truthFrames++;
+            for (int i = 0; i < tracked.Length; i++)
+            {
+                if (frame.Samples[i].IsTracked) tracked[i]++;
+                if (!float.IsNaN(frame.Trigger[i]) || !float.IsNaN(frame.Grip[i])) analog[i]++;
+            }
         }
         var inv = CultureInfo.InvariantCulture;
         stdout.WriteLine($"file: {Path.GetFileName(path)}");
@@ -45,7 +52,8 @@ public sealed class SessionInfoCommand : ICommand
         for (int i = 0; i < h.Devices.Count; i++)
         {
             DeviceInfo d = h.Devices[i];
-            stdout.WriteLine($"  {d.Id}: {d.Class} serial '{d.Serial}' runtime role {d.RuntimeRole}{(h.HasTrueRoles ? ", true role " + h.TrueRole(i) : "")}");
+            string share = reader.FrameCount > 0 ? string.Create(inv, $"{100.0 * tracked[i] / reader.FrameCount:0.#}% of frames") : "no frames";
+            stdout.WriteLine($"  {d.Id}: {d.Class} serial '{d.Serial}' runtime role {d.RuntimeRole}{(h.HasTrueRoles ? ", true role " + h.TrueRole(i) : "")}; tracked {share}{(analog[i] > 0 ? $", analog input in {analog[i]} frames" : "")}");
         }
         stdout.WriteLine($"events: {presses} trigger presses, {releases} releases");
         stdout.WriteLine($"ground truth: {(h.TruthHumanoid != null ? $"skeleton of {h.TruthHumanoid.Skeleton.JointCount} joints ({h.TruthHumanoid.Count} humanoid bones), " : "no skeleton, ")}{truthFrames} frames with joint poses");
