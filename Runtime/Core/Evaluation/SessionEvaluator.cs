@@ -48,7 +48,7 @@ namespace AvatarGo.Core
                     report.Profile = profile;
                     scaled = calibrator.ScaledAvatar;
                     solver = new BodySolver(profile, header.Devices, scaled, calibrator.AvatarPose);
-                    ik = new FullBodyIk(scaled);
+                    ik = new FullBodyIk(scaled, calibrator.AvatarPose);
                     pose = new SkeletonPose(scaled.Skeleton);
                     pose.CopyFrom(calibrator.AvatarPose);
                     for (int b = 0; b < HumanBones.Count; b++)

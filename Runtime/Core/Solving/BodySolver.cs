@@ -24,9 +24,6 @@ namespace AvatarGo.Core
         private readonly Quaternion _hipsRotation0;
         private readonly Vector3[] _kneeInFoot = new Vector3[2];
         private readonly Vector3[] _elbowInHand = new Vector3[2];
-        private readonly Vector3[] _hipInHips = new Vector3[2];
-        private readonly Vector3[] _shoulderInHips = new Vector3[2];
-        private readonly float _legLength, _armLength;
 
         /// <summary>
         /// Prepares the solver for a calibration. <paramref name="devices"/> is the device list whose order the
@@ -58,14 +55,16 @@ namespace AvatarGo.Core
                 bool left = side == 0;
                 Pose foot = w[avatar[left ? HumanBone.LeftFoot : HumanBone.RightFoot]];
                 Pose hand = w[avatar[left ? HumanBone.LeftHand : HumanBone.RightHand]];
-                // Knees bend forward; elbows bend backward and down, as from a T-pose with the palms down.
-                _kneeInFoot[side] = Vector3.Transform(forward, Quaternion.Conjugate(foot.Rotation));
-                _elbowInHand[side] = Vector3.Transform(Vector3.Normalize(-forward + 0.5f * down), Quaternion.Conjugate(hand.Rotation));
-                _hipInHips[side] = hips.InverseTransformPoint(w[avatar[left ? HumanBone.LeftUpperLeg : HumanBone.RightUpperLeg]].Position);
-                _shoulderInHips[side] = hips.InverseTransformPoint(w[avatar[left ? HumanBone.LeftUpperArm : HumanBone.RightUpperArm]].Position);
+                // Hints: where the knee (elbow) was relative to the foot (hand) at calibration, pushed the way it
+                // bends (knees forward; elbows back and down, as from a T-pose with the palms down), so the hint
+                // is never on the hip-ankle (shoulder-wrist) line. The ankle's and wrist's limited range keeps the
+                // shin's and forearm's direction close to what the foot and hand say.
+                Vector3 knee = w[avatar[left ? HumanBone.LeftLowerLeg : HumanBone.RightLowerLeg]].Position;
+                Vector3 elbow = w[avatar[left ? HumanBone.LeftLowerArm : HumanBone.RightLowerArm]].Position;
+                float leg = Vector3.Distance(knee, foot.Position), arm = Vector3.Distance(elbow, hand.Position);
+                _kneeInFoot[side] = foot.InverseTransformPoint(knee + forward * leg);
+                _elbowInHand[side] = hand.InverseTransformPoint(elbow + Vector3.Normalize(-forward + 0.5f * down) * arm);
             }
-            _legLength = Vector3.Distance(w[avatar[HumanBone.LeftUpperLeg]].Position, w[avatar[HumanBone.LeftFoot]].Position);
-            _armLength = Vector3.Distance(w[avatar[HumanBone.LeftUpperArm]].Position, w[avatar[HumanBone.LeftHand]].Position);
         }
 
         /// <summary>The calibration used.</summary>
@@ -83,10 +82,10 @@ namespace AvatarGo.Core
                 Vector3 w0 = Vector3.Transform(_rootToHead0, rootTurn);
                 targets.SpineBend = Rotations.FromTo(w0, targets.Head.Position - targets.Hips.Position);
             }
-            Limb(samples, DeviceRole.LeftFoot, 0, in targets.Hips, _hipInHips, _kneeInFoot, _legLength, ref targets.LeftFoot);
-            Limb(samples, DeviceRole.RightFoot, 1, in targets.Hips, _hipInHips, _kneeInFoot, _legLength, ref targets.RightFoot);
-            Limb(samples, DeviceRole.LeftHand, 0, in targets.Hips, _shoulderInHips, _elbowInHand, _armLength, ref targets.LeftHand);
-            Limb(samples, DeviceRole.RightHand, 1, in targets.Hips, _shoulderInHips, _elbowInHand, _armLength, ref targets.RightHand);
+            Limb(samples, DeviceRole.LeftFoot, 0, _kneeInFoot, ref targets.LeftFoot);
+            Limb(samples, DeviceRole.RightFoot, 1, _kneeInFoot, ref targets.RightFoot);
+            Limb(samples, DeviceRole.LeftHand, 0, _elbowInHand, ref targets.LeftHand);
+            Limb(samples, DeviceRole.RightHand, 1, _elbowInHand, ref targets.RightHand);
         }
 
         private bool Joint(ReadOnlySpan<DeviceSample> samples, DeviceRole role, out Pose joint)
@@ -101,14 +100,10 @@ namespace AvatarGo.Core
             return true;
         }
 
-        private void Limb(ReadOnlySpan<DeviceSample> samples, DeviceRole role, int side, in Pose hips, Vector3[] rootInHips,
-            Vector3[] bendInEnd, float length, ref LimbTarget target)
+        private void Limb(ReadOnlySpan<DeviceSample> samples, DeviceRole role, int side, Vector3[] hintInEnd, ref LimbTarget target)
         {
             target.IsActive = Joint(samples, role, out target.Goal);
-            if (!target.IsActive) return;
-            Vector3 root = hips.TransformPoint(rootInHips[side]);
-            Vector3 bend = Vector3.Transform(bendInEnd[side], target.Goal.Rotation);
-            target.Hint = (root + target.Goal.Position) * 0.5f + bend * length;
+            if (target.IsActive) target.Hint = target.Goal.TransformPoint(hintInEnd[side]);
         }
     }
 }

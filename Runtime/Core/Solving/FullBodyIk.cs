@@ -22,9 +22,13 @@ namespace AvatarGo.Core
         private readonly int _head;
         private readonly int[] _spine;
         private readonly LimbChain _leftLeg, _rightLeg, _leftArm, _rightArm;
+        private readonly Quaternion[] _spineReference;
 
-        /// <summary>Precomputes the chains of <paramref name="map"/>'s skeleton.</summary>
-        public FullBodyIk(HumanoidMap map)
+        /// <summary>
+        /// Precomputes the chains of <paramref name="map"/>'s skeleton. <paramref name="reference"/> is the pose the
+        /// spine is bent from every frame (the avatar's calibration T-pose); null uses the skeleton's rest pose.
+        /// </summary>
+        public FullBodyIk(HumanoidMap map, SkeletonPose reference = null)
         {
             Map = map ?? throw new ArgumentNullException(nameof(map));
             var missing = map.MissingRequired();
@@ -36,6 +40,9 @@ namespace AvatarGo.Core
             foreach (HumanBone b in new[] { HumanBone.Spine, HumanBone.Chest, HumanBone.UpperChest, HumanBone.Neck })
                 if (map.Has(b) && s.IsAncestorOrSelf(map[b], _head)) spine.Add(map[b]);
             _spine = spine.ToArray();
+            _spineReference = new Quaternion[_spine.Length];
+            for (int i = 0; i < _spine.Length; i++)
+                _spineReference[i] = reference != null ? reference.Local[_spine[i]].Rotation : s.GetRestLocal(_spine[i]).Rotation;
             _leftLeg = new LimbChain(s, map[HumanBone.LeftUpperLeg], map[HumanBone.LeftLowerLeg], map[HumanBone.LeftFoot]);
             _rightLeg = new LimbChain(s, map[HumanBone.RightUpperLeg], map[HumanBone.RightLowerLeg], map[HumanBone.RightFoot]);
             _leftArm = new LimbChain(s, map[HumanBone.LeftUpperArm], map[HumanBone.LeftLowerArm], map[HumanBone.LeftHand]);
@@ -61,6 +68,9 @@ namespace AvatarGo.Core
             {
                 if (_spine.Length > 0)
                 {
+                    // The bend is relative to the reference spine: start from it, not from last frame's result.
+                    for (int i = 0; i < _spine.Length; i++) pose.Local[_spine[i]] = pose.Local[_spine[i]].WithRotation(_spineReference[i]);
+                    pose.UpdateWorld();
                     Quaternion bend = Rotations.IsUnit(targets.SpineBend) ? targets.SpineBend : Quaternion.Identity;
                     Quaternion share = Quaternion.Slerp(Quaternion.Identity, bend, 1f / _spine.Length);
                     for (int i = 0; i < _spine.Length; i++)
