@@ -17,12 +17,17 @@ namespace AvatarGo.Core
     /// </remarks>
     public sealed class FullBodyIk
     {
-        private const int SpinePasses = 3;
+        private const int MaxSpinePasses = 24;
+        private const float SpineTolerance = 0.0005f;
         private readonly int _hips;
         private readonly int _head;
         private readonly int[] _spine;
         private readonly LimbChain _leftLeg, _rightLeg, _leftArm, _rightArm;
         private readonly Quaternion[] _spineReference;
+        private readonly int _leftClavicle, _rightClavicle;
+        private readonly Quaternion _leftClavicleReference, _rightClavicleReference;
+        private const float MaxClavicleDegrees = 20f;
+        private readonly int[] _spinePath;
 
         /// <summary>
         /// Precomputes the chains of <paramref name="map"/>'s skeleton. <paramref name="reference"/> is the pose the
@@ -40,11 +45,20 @@ namespace AvatarGo.Core
             foreach (HumanBone b in new[] { HumanBone.Spine, HumanBone.Chest, HumanBone.UpperChest, HumanBone.Neck })
                 if (map.Has(b) && s.IsAncestorOrSelf(map[b], _head)) spine.Add(map[b]);
             _spine = spine.ToArray();
+            var path = new List<int>();
+            if (_spine.Length > 0)
+                for (int j = _head; j != _spine[0]; j = s.GetParent(j)) path.Insert(0, j);
+            if (_spine.Length > 0) path.Insert(0, _spine[0]);
+            _spinePath = path.ToArray();
             _spineReference = new Quaternion[_spine.Length];
             for (int i = 0; i < _spine.Length; i++)
                 _spineReference[i] = reference != null ? reference.Local[_spine[i]].Rotation : s.GetRestLocal(_spine[i]).Rotation;
             _leftLeg = new LimbChain(s, map[HumanBone.LeftUpperLeg], map[HumanBone.LeftLowerLeg], map[HumanBone.LeftFoot]);
             _rightLeg = new LimbChain(s, map[HumanBone.RightUpperLeg], map[HumanBone.RightLowerLeg], map[HumanBone.RightFoot]);
+            _leftClavicle = map[HumanBone.LeftShoulder];
+            _rightClavicle = map[HumanBone.RightShoulder];
+            _leftClavicleReference = _leftClavicle < 0 ? Quaternion.Identity : reference != null ? reference.Local[_leftClavicle].Rotation : s.GetRestLocal(_leftClavicle).Rotation;
+            _rightClavicleReference = _rightClavicle < 0 ? Quaternion.Identity : reference != null ? reference.Local[_rightClavicle].Rotation : s.GetRestLocal(_rightClavicle).Rotation;
             _leftArm = new LimbChain(s, map[HumanBone.LeftUpperArm], map[HumanBone.LeftLowerArm], map[HumanBone.LeftHand]);
             _rightArm = new LimbChain(s, map[HumanBone.RightUpperArm], map[HumanBone.RightLowerArm], map[HumanBone.RightHand]);
         }
@@ -70,22 +84,25 @@ namespace AvatarGo.Core
                 {
                     // The bend is relative to the reference spine: start from it, not from last frame's result.
                     for (int i = 0; i < _spine.Length; i++) pose.Local[_spine[i]] = pose.Local[_spine[i]].WithRotation(_spineReference[i]);
-                    pose.UpdateWorld();
+                    UpdatePath(pose, _spinePath);
                     Quaternion bend = Rotations.IsUnit(targets.SpineBend) ? targets.SpineBend : Quaternion.Identity;
                     Quaternion share = Quaternion.Slerp(Quaternion.Identity, bend, 1f / _spine.Length);
                     for (int i = 0; i < _spine.Length; i++)
                     {
                         RotateWorld(pose, _spine[i], share);
-                        pose.UpdateWorld();
+                        UpdatePath(pose, _spinePath);
                     }
-                    for (int pass = 0; pass < SpinePasses; pass++)
+                    for (int pass = 0; pass < MaxSpinePasses; pass++)
+                    {
+                        if (Vector3.Distance(w[_head].Position, targets.Head.Position) < SpineTolerance) break;
                         for (int i = _spine.Length - 1; i >= 0; i--)
                         {
                             Vector3 pivot = w[_spine[i]].Position;
                             Quaternion toTarget = Rotations.FromTo(w[_head].Position - pivot, targets.Head.Position - pivot);
                             RotateWorld(pose, _spine[i], Quaternion.Slerp(Quaternion.Identity, toTarget, 0.5f));
-                            pose.UpdateWorld();
+                            UpdatePath(pose, _spinePath);
                         }
+                    }
                 }
                 report.HeadDistanceLeft = Vector3.Distance(w[_head].Position, targets.Head.Position);
                 SetWorldRotation(pose, _head, targets.Head.Rotation);
@@ -94,10 +111,46 @@ namespace AvatarGo.Core
 
             if (targets.LeftFoot.IsActive) report.LeftFoot = TwoBoneIk.Solve(pose, _leftLeg, targets.LeftFoot.Goal, targets.LeftFoot.Hint);
             if (targets.RightFoot.IsActive) report.RightFoot = TwoBoneIk.Solve(pose, _rightLeg, targets.RightFoot.Goal, targets.RightFoot.Hint);
-            if (targets.LeftHand.IsActive) report.LeftHand = TwoBoneIk.Solve(pose, _leftArm, targets.LeftHand.Goal, targets.LeftHand.Hint);
-            if (targets.RightHand.IsActive) report.RightHand = TwoBoneIk.Solve(pose, _rightArm, targets.RightHand.Goal, targets.RightHand.Hint);
+            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftClavicle, _leftClavicleReference, in targets.LeftHand);
+            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightClavicle, _rightClavicleReference, in targets.RightHand);
             pose.UpdateWorld();
             return report;
+        }
+
+        // An arm whose hand cannot reach its goal first raises or pulls the clavicle toward it (up to
+        // MaxClavicleDegrees, as a shoulder shrugs), then solves again; what is still out of reach is reported.
+        private static LimbResult SolveArm(SkeletonPose pose, LimbChain arm, int clavicle, Quaternion clavicleReference, in LimbTarget target)
+        {
+            if (clavicle >= 0)
+            {
+                pose.Local[clavicle] = pose.Local[clavicle].WithRotation(clavicleReference);
+                int parent = pose.Skeleton.GetParent(clavicle);
+                pose.World[clavicle] = (parent < 0 ? pose.Origin : pose.World[parent]) * pose.Local[clavicle];
+            }
+            LimbResult result = TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
+            if (result.Reached || clavicle < 0 || !(result.DistanceLeft > 1e-4f)) return result;
+            Vector3 pivot = pose.World[clavicle].Position;
+            Vector3 shoulder = pose.World[arm.Root].Position;
+            Vector3 hand = pose.World[arm.End].Position;
+            Vector3 wanted = shoulder + (target.Goal.Position - hand);
+            Quaternion turn = Rotations.FromTo(shoulder - pivot, wanted - pivot);
+            float angle = Rotations.AngleDegrees(Quaternion.Identity, turn);
+            if (angle > MaxClavicleDegrees) turn = Quaternion.Slerp(Quaternion.Identity, turn, MaxClavicleDegrees / angle);
+            RotateWorld(pose, clavicle, turn);
+            int p = pose.Skeleton.GetParent(clavicle);
+            pose.World[clavicle] = (p < 0 ? pose.Origin : pose.World[p]) * pose.Local[clavicle];
+            return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
+        }
+
+        private static void UpdatePath(SkeletonPose pose, int[] path)
+        {
+            Pose[] w = pose.World;
+            for (int i = 0; i < path.Length; i++)
+            {
+                int j = path[i];
+                int parent = pose.Skeleton.GetParent(j);
+                w[j] = (parent < 0 ? pose.Origin : w[parent]) * pose.Local[j];
+            }
         }
 
         private static Quaternion ParentRotation(SkeletonPose pose, int joint)

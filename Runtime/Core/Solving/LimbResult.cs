@@ -3,7 +3,7 @@ namespace AvatarGo.Core
     /// <summary>What one limb's IK achieved this frame.</summary>
     public readonly struct LimbResult
     {
-        /// <summary>True when the goal was within the limb's reach.</summary>
+        /// <summary>True when the end joint is within <see cref="TwoBoneIk.ReachedTolerance"/> of the goal.</summary>
         public readonly bool Reached;
 
         /// <summary>Distance in metres left between the end joint and the goal (0 when reached).</summary>

@@ -11,6 +11,9 @@ namespace AvatarGo.Core
     /// </summary>
     public static class TwoBoneIk
     {
+        /// <summary>A goal counts as reached when the end joint ends within this distance of it (1 mm).</summary>
+        public const float ReachedTolerance = 0.001f;
+
         /// <summary>
         /// Solves one limb. The world poses of the chain's root's ancestors must be up to date; on return the world
         /// poses of the chain's joints are too (their other descendants are not: call <see cref="SkeletonPose.UpdateWorld"/>).
@@ -56,7 +59,7 @@ namespace AvatarGo.Core
             pose.Local[chain.End] = pose.Local[chain.End].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(w[endParent].Rotation) * goal.Rotation));
             w[chain.End] = w[endParent] * pose.Local[chain.End];
             float left = Vector3.Distance(w[chain.End].Position, goal.Position);
-            return new LimbResult(goalDistance <= reach - 1e-5f, left);
+            return new LimbResult(left <= ReachedTolerance, left);
         }
 
         /// <summary>Applies a world-space rotation <paramref name="delta"/> to joint <paramref name="joint"/> of the chain and refreshes the chain below it.</summary>
