@@ -13,7 +13,7 @@ public sealed class EvaluateCommand : ICommand
     public string Name => "evaluate";
     public string Summary => "Replay a synthetic session and measure how closely the avatar follows";
     public string Help => """
-        avatargo evaluate SESSION [--mode exact|fixed] [--json OUT]
+        avatargo evaluate SESSION [--mode exact|fixed] [--avatar FILE] [--leg-scale S] [--arm-scale S] [--json OUT]
 
         Replays SESSION through calibration (T-pose identification, scaling, walk-in offsets), the
         per-frame body solver and the IK, and compares the avatar (the wearer's own skeleton from the
@@ -22,6 +22,9 @@ public sealed class EvaluateCommand : ICommand
         mean, 95th percentile and maximum position error in mm; end-effector rotation error and knee
         angle error in degrees.
           --mode exact|fixed   exact offsets (the paper's method, default) or fixed offsets (its baseline)
+          --avatar FILE        use this BVH skeleton (its rest pose, any units) as the avatar instead
+          --leg-scale S        make the avatar's legs S times as long (default 1)
+          --arm-scale S        make the avatar's arms S times as long (default 1)
           --json OUT           also write the figures as JSON to OUT
         Exit codes: 0 ok, 1 unreadable session or calibration failed, 2 bad arguments.
         """;
@@ -32,10 +35,19 @@ public sealed class EvaluateCommand : ICommand
         string path = a.Positional0("SESSION");
         OffsetMode mode = ParseMode(a.String("mode", "exact"));
         string json = a.String("json");
+        string avatarFile = a.String("avatar");
+        float legScale = (float)a.Double("leg-scale", 1), armScale = (float)a.Double("arm-scale", 1);
         a.ThrowOnUnknown(1);
+        if (!(legScale > 0.5f && legScale < 2f) || !(armScale > 0.5f && armScale < 2f)) throw new UsageException("limb scales must be between 0.5 and 2");
         EvaluationReport report;
         using (SessionReader reader = SessionReader.Open(path))
-            report = SessionEvaluator.Evaluate(reader, mode);
+        {
+            HumanoidMap avatar = avatarFile != null
+                ? HumanoidNaming.Detect(BvhReader.ReadFile(avatarFile, new BvhReadOptions { ToMetres = true }).Skeleton)
+                : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no ground-truth skeleton; give --avatar FILE");
+            if (legScale != 1f || armScale != 1f) avatar = Proportions.ScaleLimbs(avatar, legScale, armScale);
+            report = SessionEvaluator.Evaluate(reader, mode, avatar);
+        }
         if (report.Profile == null)
         {
             stderr.WriteLine($"avatargo evaluate: calibration did not complete: {report.CalibrationMessage}");
