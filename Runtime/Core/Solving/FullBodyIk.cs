@@ -12,13 +12,13 @@ namespace AvatarGo.Core
     /// <remarks>
     /// Spine: the bend <see cref="BodyTargets.SpineBend"/> (the paper's angle α between w0 and wt, with its axis) is
     /// first shared equally by the spine joints (Spine, Chest, UpperChest, Neck as present), which curves the back
-    /// instead of folding it at one joint; then a few cyclic-coordinate-descent passes, each joint taking half of
-    /// its correction, bring the head joint onto its target where the spine's length allows.
+    /// instead of folding it at one joint; then cyclic-coordinate-descent passes (each joint taking half of its correction in the first two, to
+    /// spread the bend, then all of it; at most six, until the head is within 1 mm), bring the head joint onto its target where the spine's length allows.
     /// </remarks>
     public sealed class FullBodyIk
     {
-        private const int MaxSpinePasses = 24;
-        private const float SpineTolerance = 0.0005f;
+        private const int MaxSpinePasses = 6;
+        private const float SpineTolerance = 0.001f;
         private readonly int _hips;
         private readonly int _head;
         private readonly int[] _spine;
@@ -99,7 +99,7 @@ namespace AvatarGo.Core
                         {
                             Vector3 pivot = w[_spine[i]].Position;
                             Quaternion toTarget = Rotations.FromTo(w[_head].Position - pivot, targets.Head.Position - pivot);
-                            RotateWorld(pose, _spine[i], Quaternion.Slerp(Quaternion.Identity, toTarget, 0.5f));
+                            RotateWorld(pose, _spine[i], pass < 2 ? Quaternion.Slerp(Quaternion.Identity, toTarget, 0.5f) : toTarget);
                             UpdatePath(pose, _spinePath);
                         }
                     }

@@ -27,7 +27,7 @@ public sealed class DemoCommand : ICommand
     public int Run(string[] args, TextWriter stdout, TextWriter stderr)
     {
         var a = new ArgReader(args);
-        string bvh = a.String("bvh") ?? BundledClip();
+        string bvh = a.String("bvh") ?? DemoCommandPaths.BundledClip();
         string outBvh = a.String("out-bvh");
         SimulationOptions options = SimulateCommand.Options(a);
         a.ThrowOnUnknown(0);
@@ -95,17 +95,6 @@ public sealed class DemoCommand : ICommand
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"{name,-26} {exact.Median,6:0.0} / {exact.P95,-6:0.0}     {fixedOffsets.Median,6:0.0} / {fixedOffsets.P95,-6:0.0}"));
 
-    /// <summary>The clip shipped next to the tool (Tools~/data, copied to the output folder).</summary>
-    private static string BundledClip()
-    {
-        foreach (string dir in new[] { AppContext.BaseDirectory, Path.Combine(AppContext.BaseDirectory, "..", "..", "..", "..") })
-        {
-            string path = Path.Combine(dir, "data", "mocapbank_30fps.bvh");
-            if (File.Exists(path)) return path;
-        }
-        throw new FileNotFoundException("the bundled clip data/mocapbank_30fps.bvh is missing next to the tool; pass --bvh FILE");
-    }
-
     /// <summary>A one-line progress bar on standard error (only when it is a terminal).</summary>
     private sealed class ProgressBar
     {
@@ -129,5 +118,17 @@ public sealed class DemoCommand : ICommand
         {
             if (_live) _err.Write("\r" + new string(' ', 60) + "\r");
         }
+    }
+}
+
+/// <summary>Where the tool finds the clip it bundles.</summary>
+internal static class DemoCommandPaths
+{
+    /// <summary>The clip shipped next to the tool (Tools~/data, copied to the output folder).</summary>
+    public static string BundledClip()
+    {
+        string path = Path.Combine(AppContext.BaseDirectory, "data", "mocapbank_30fps.bvh");
+        if (File.Exists(path)) return path;
+        throw new FileNotFoundException("the bundled clip data/mocapbank_30fps.bvh is missing next to the tool; pass --bvh FILE");
     }
 }

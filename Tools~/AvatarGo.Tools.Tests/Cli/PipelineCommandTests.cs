@@ -1,0 +1,61 @@
+using System.IO;
+using System.Text.Json;
+using NUnit.Framework;
+
+namespace AvatarGo.Tools.Tests;
+
+public class PipelineCommandTests
+{
+    [Test]
+    public void BenchAllocatesNothingPerFrame()
+    {
+        var r = CliRunner.Run("bench", "--json", "--runs", "3");
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
+        using var doc = JsonDocument.Parse(r.Stdout);
+        Assert.That(doc.RootElement.GetProperty("frames").GetInt32(), Is.GreaterThan(1000));
+        foreach (var c in doc.RootElement.GetProperty("cases").EnumerateArray())
+        {
+            // Exactly zero: per-frame paths must not allocate (a GC stall is a dropped frame in VR).
+            Assert.That(c.GetProperty("bytes_per_frame").GetDouble(), Is.EqualTo(0.0), c.GetProperty("name").GetString());
+            Assert.That(c.GetProperty("ns_per_frame_median").GetDouble(), Is.GreaterThan(0.0));
+        }
+    }
+
+    [Test]
+    public void DemoComparesExactAndFixedOffsetsAndWritesTheSolvedAvatar()
+    {
+        string bvh = Path.Combine(Path.GetTempPath(), "avatargo-demo-test-" + System.Guid.NewGuid().ToString("N") + ".bvh");
+        try
+        {
+            var r = CliRunner.Run("demo", "--out-bvh", bvh);
+            Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
+            StringAssert.Contains("exact offsets", r.Stdout);
+            StringAssert.Contains("fixed offsets", r.Stdout);
+            var info = CliRunner.Run("bvh", "info", bvh);
+            Assert.That(info.ExitCode, Is.EqualTo(0), info.Stderr);
+            StringAssert.Contains("missing required: none", info.Stdout);
+        }
+        finally { File.Delete(bvh); }
+    }
+
+    [Test]
+    public void SimulateThenEvaluateWritesTheIssuesJsonKeys()
+    {
+        string session = Path.Combine(Path.GetTempPath(), "avatargo-sim-" + System.Guid.NewGuid().ToString("N") + ".agsession");
+        string json = session + ".json";
+        try
+        {
+            var s = CliRunner.Run("simulate", "--bvh", Paths.SharedMocap("mixamo_fingers_30fps.bvh"), "--out", session, "--seed", "5");
+            Assert.That(s.ExitCode, Is.EqualTo(0), s.Stderr);
+            var e = CliRunner.Run("evaluate", session, "--mode", "fixed", "--json", json);
+            Assert.That(e.ExitCode, Is.EqualTo(0), e.Stderr);
+            using var doc = JsonDocument.Parse(File.ReadAllText(json));
+            var root = doc.RootElement;
+            foreach (string key in new[] { "mode", "frames", "end_effector_median_mm", "end_effector_p95_mm", "mid_median_mm", "mpjpe_mm", "knee_angle_error_deg", "joints" })
+                Assert.That(root.TryGetProperty(key, out _), Is.True, key);
+            Assert.That(root.GetProperty("mode").GetString(), Is.EqualTo("fixed"));
+            Assert.That(root.GetProperty("joints").GetProperty("Hips").GetProperty("median_mm").GetDouble(), Is.GreaterThan(50), "fixed offsets put the hips at the tracker, centimetres away");
+        }
+        finally { File.Delete(session); File.Delete(json); }
+    }
+}
