@@ -86,6 +86,54 @@ namespace AvatarGo.Core
             _jointInDevice[(int)role] = joint.RelativeTo(device);
         }
 
+        /// <summary>
+        /// The same calibration for the avatar uniformly rescaled to <paramref name="scale"/> (for example after the
+        /// wearer chose another eye height): the avatar joints at the walk-in are scaled about the placement's floor
+        /// point, and the offsets recomputed from them, so the avatar still stands on the floor where it stood and
+        /// every device keeps its own measured pose. Rotation offsets do not change.
+        /// </summary>
+        public CalibrationProfile WithAvatarScale(float scale)
+        {
+            if (!(scale > 0f) || float.IsInfinity(scale)) throw new ArgumentOutOfRangeException(nameof(scale), scale, "The scale must be positive.");
+            var p = new CalibrationProfile(this) { AvatarScale = scale };
+            float ratio = scale / AvatarScale;
+            Vector3 origin = Placement.Position;
+            foreach (DeviceRole role in DeviceMountings.Roles)
+            {
+                Pose joint = _jointAtCalibration[(int)role];
+                var moved = new Pose(origin + (joint.Position - origin) * ratio, joint.Rotation);
+                p.SetOffsets(role, _deviceAtCalibration[(int)role], moved);
+            }
+            if (Mode == OffsetMode.Fixed) return p.WithFixedOffsets();
+            return p;
+        }
+
+        /// <summary>
+        /// True when <paramref name="devices"/> contains a device with each role's serial (the same devices are worn),
+        /// so this profile can be reused without calibrating again.
+        /// </summary>
+        public bool MatchesDevices(System.Collections.Generic.IReadOnlyList<DeviceInfo> devices)
+        {
+            if (devices == null) return false;
+            foreach (DeviceRole role in DeviceMountings.Roles)
+            {
+                string serial = _serials[(int)role];
+                bool found = false;
+                if (!string.IsNullOrEmpty(serial))
+                    for (int i = 0; i < devices.Count && !found; i++) found = devices[i].Serial == serial;
+                if (!found) return false;
+            }
+            return true;
+        }
+
+        /// <summary>A copy whose device ids are those of this session's devices (matched when restoring by serial).</summary>
+        internal CalibrationProfile WithDeviceIds(System.Collections.Generic.IReadOnlyList<DeviceInfo> devices, int[] deviceIndexByRole)
+        {
+            var p = new CalibrationProfile(this);
+            foreach (DeviceRole role in DeviceMountings.Roles) p.SetDevice(role, devices[deviceIndexByRole[(int)role]]);
+            return p;
+        }
+
         /// <summary>Fixed-offset HMD → head joint translation in the HMD frame: 7 cm down and 9 cm back from the eyes (the inverse of <see cref="TPoser.HeadToEyes"/>).</summary>
         public static readonly Vector3 FixedHeadOffset = new Vector3(0f, -0.07f, -0.09f);
 

@@ -78,6 +78,31 @@ namespace AvatarGo.Core
         }
 
         /// <summary>
+        /// Reuses a saved profile instead of calibrating: when the same devices are worn (matched by serial), the
+        /// roles, the scaled avatar and its calibration pose are rebuilt and the state becomes
+        /// <see cref="CalibrationState.Calibrated"/>. Returns false (and changes nothing) when a device is missing.
+        /// </summary>
+        public bool TryRestore(CalibrationProfile profile)
+        {
+            if (profile == null) throw new ArgumentNullException(nameof(profile));
+            if (!profile.MatchesDevices(_devices)) return false;
+            ResetRoles();
+            foreach (DeviceRole role in DeviceMountings.Roles)
+                for (int d = 0; d < _devices.Length; d++)
+                    if (_devices[d].Serial == profile.Serial(role)) _deviceByRole[(int)role] = d;
+            Skeleton scaled = _avatar.Skeleton.Scaled(profile.AvatarScale);
+            ScaledAvatar = new HumanoidMap(scaled, _avatar.Pairs());
+            AvatarPose = new SkeletonPose(scaled);
+            TPoser.Apply(ScaledAvatar, AvatarPose, profile.Placement);
+            var restored = profile.WithDeviceIds(_devices, _deviceByRole);
+            Profile = restored;
+            State = CalibrationState.Calibrated;
+            LastError = CalibrationError.None;
+            LastMessage = "Calibration restored from a saved profile.";
+            return true;
+        }
+
+        /// <summary>
         /// Feeds one frame: the samples of every device (in constructor order) and this frame's events.
         /// A trigger press on any controller runs the current step.
         /// </summary>
@@ -191,24 +216,28 @@ namespace AvatarGo.Core
                 DeviceRole r = _devices[t].RuntimeRole;
                 if (r == DeviceRole.Pelvis) { if (pelvis >= 0) return Fail(CalibrationError.RoleConflict, "two trackers are assigned the waist role"); pelvis = t; }
             }
+            // Without runtime roles, each tracker is scored by how well it fits the body: height off the expected
+            // one plus horizontal distance from the HMD (a spare tracker on a table or the floor nearby scores badly).
+            float Away(int t) => Horizontal(mean[t].Position - head.Position).Length();
             if (pelvis < 0)
             {
                 float best = float.MaxValue;
                 foreach (int t in liveTrackers)
                 {
-                    float miss = Math.Abs(mean[t].Position.Y - floor - 0.57f * eyeHeight);
-                    if (mean[t].Position.Y - floor > 0.25f * eyeHeight && miss < best) { best = miss; pelvis = t; }
+                    float score = Math.Abs(mean[t].Position.Y - floor - 0.57f * eyeHeight) + Away(t);
+                    if (mean[t].Position.Y - floor > 0.25f * eyeHeight && score < best) { best = score; pelvis = t; }
                 }
                 if (pelvis < 0) return Fail(CalibrationError.PelvisNotBetweenHeadAndFeet, "no tracker is at waist height");
             }
+            float FootScore(int t) => mean[t].Position.Y - floor + Away(t);
             foreach (int t in liveTrackers)
             {
                 if (t == pelvis) continue;
-                if (footA < 0 || mean[t].Position.Y < mean[footA].Position.Y) { footB = footA; footA = t; }
-                else if (footB < 0 || mean[t].Position.Y < mean[footB].Position.Y) footB = t;
+                if (footA < 0 || FootScore(t) < FootScore(footA)) { footB = footA; footA = t; }
+                else if (footB < 0 || FootScore(t) < FootScore(footB)) footB = t;
             }
             if (liveTrackers.Count > 3)
-                Explanation += $"{liveTrackers.Count} trackers are tracked: the one nearest waist height is the pelvis, the two lowest are the feet; the others are ignored. ";
+                Explanation += $"{liveTrackers.Count} trackers are tracked: the one nearest waist height under the head is the pelvis, the two lowest near the body are the feet; the others are ignored. ";
             int left = liveControllers[0], right = liveControllers[1];
 
             int[] used = { hmd, left, right, pelvis, footA, footB };
@@ -250,8 +279,9 @@ namespace AvatarGo.Core
                 DeviceRole runtime = _devices[_deviceByRole[(int)role]].RuntimeRole;
                 if (runtime != DeviceRole.None && runtime != role)
                 {
+                    string detail = $"{_devices[_deviceByRole[(int)role]]} is worn as {role}";
                     ResetRoles();
-                    return Fail(CalibrationError.RuntimeRoleMismatch, $"{_devices[_deviceByRole[(int)role]]} is worn as {role}");
+                    return Fail(CalibrationError.RuntimeRoleMismatch, detail);
                 }
             }
 
