@@ -1,0 +1,94 @@
+using System;
+using System.Globalization;
+using System.IO;
+using System.Text.Json;
+using AvatarGo.Core;
+
+namespace AvatarGo.Cli.Commands;
+
+/// <summary>`avatargo calibrate SESSION`: runs the calibration flow over a session and prints the outcome.</summary>
+public sealed class CalibrateCommand : ICommand
+{
+    public string Name => "calibrate";
+    public string Summary => "Run the Walk-In-Avatar calibration over a session and print roles, scale and offsets";
+    public string Help => """
+        avatargo calibrate SESSION [--json] [--avatar FILE] [--save PROFILE]
+
+        Feeds the session's frames to the calibration state machine (trigger 1: identify devices,
+        validate the T-pose, scale and place the avatar; trigger 2: exact offsets) and prints the
+        outcome: status, the error and its message when a step was refused, the role found for each
+        device, the scale, and the offsets (each joint's position and rotation in its device's frame).
+          --avatar FILE    the avatar (a BVH skeleton); default: the wearer's skeleton in the session
+          --json           print the outcome as JSON (the profile format, plus status)
+          --save PROFILE   save the calibration profile (atomic write)
+        Exit codes: 0 calibrated, 1 unreadable session or calibration not completed, 2 bad arguments.
+        """;
+
+    public int Run(string[] args, TextWriter stdout, TextWriter stderr)
+    {
+        var a = new ArgReader(args, "json");
+        string path = a.Positional0("SESSION");
+        bool json = a.Flag("json");
+        string avatarFile = a.String("avatar");
+        string save = a.String("save");
+        a.ThrowOnUnknown(1);
+
+        using SessionReader reader = SessionReader.Open(path);
+        HumanoidMap avatar = avatarFile != null
+            ? HumanoidNaming.Detect(BvhReader.ReadFile(avatarFile, new BvhReadOptions { ToMetres = true }).Skeleton)
+            : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no wearer skeleton; give --avatar FILE");
+        var calibrator = new Calibrator(reader.Header.Devices, avatar);
+        SessionFrame frame = reader.CreateFrame();
+        int presses = 0;
+        string lastRefusal = null;
+        while (calibrator.State != CalibrationState.Calibrated && reader.ReadFrame(frame))
+        {
+            calibrator.Update(frame.Time, frame.Samples, frame.Events);
+            foreach (InputEvent e in frame.Events)
+                if (e.Kind == InputEventKind.TriggerPressed) presses++;
+            if (calibrator.LastError != CalibrationError.None) lastRefusal = $"{calibrator.LastError}: {calibrator.LastMessage}";
+        }
+        bool ok = calibrator.State == CalibrationState.Calibrated;
+        var inv = CultureInfo.InvariantCulture;
+        if (json)
+        {
+            string profile = ok ? CalibrationProfileStore.ToJson(calibrator.Profile) : "null";
+            stdout.WriteLine("{");
+            stdout.WriteLine($"  \"status\": \"{(ok ? "calibrated" : calibrator.State.ToString())}\",");
+            stdout.WriteLine($"  \"error\": {JsonSerializer.Serialize(calibrator.LastError.ToString())},");
+            stdout.WriteLine($"  \"message\": {JsonSerializer.Serialize(calibrator.LastMessage)},");
+            stdout.WriteLine($"  \"profile\": {profile.TrimEnd().Replace("\n", "\n  ")}");
+            stdout.WriteLine("}");
+        }
+        else
+        {
+            stdout.WriteLine($"status: {(ok ? "calibrated" : "not calibrated (" + calibrator.State + ")")} after {presses} trigger press(es)");
+            if (lastRefusal != null) stdout.WriteLine($"last refusal: {lastRefusal}");
+            if (!ok) stdout.WriteLine($"message: {calibrator.LastMessage}");
+            if (calibrator.Explanation.Length > 0) stdout.WriteLine($"note: {calibrator.Explanation.Trim()}");
+            if (calibrator.Profile != null)
+            {
+                CalibrationProfile p = calibrator.Profile;
+                stdout.WriteLine(string.Create(inv, $"scale: {p.AvatarScale:0.0000} (wearer eye height {p.WearerEyeHeight:0.000} m, avatar {p.AvatarEyeHeight:0.000} m, floor {p.FloorHeight:0.###} m)"));
+                foreach (DeviceRole role in DeviceMountings.Roles)
+                {
+                    DeviceInfo d = reader.Header.Devices[calibrator.DeviceIndexOf(role)];
+                    string line = $"  {role,-10} device {d.Id} ({d.Class}, {d.Serial})";
+                    if (ok)
+                    {
+                        Pose o = p.JointInDevice(role);
+                        line += string.Create(inv, $": joint at ({o.Position.X * 1000:0.0}, {o.Position.Y * 1000:0.0}, {o.Position.Z * 1000:0.0}) mm in the device frame, rotated {Rotations.AngleDegrees(System.Numerics.Quaternion.Identity, o.Rotation):0.0} deg");
+                    }
+                    stdout.WriteLine(line);
+                }
+                if (ok) stdout.WriteLine(string.Create(inv, $"  w0 (pelvis tracker -> HMD): ({p.RootToHead.X:0.000}, {p.RootToHead.Y:0.000}, {p.RootToHead.Z:0.000}) m"));
+            }
+        }
+        if (ok && save != null)
+        {
+            CalibrationProfileStore.Save(calibrator.Profile, save);
+            if (!json) stdout.WriteLine($"profile saved to {save}");
+        }
+        return ok ? 0 : 1;
+    }
+}
