@@ -211,11 +211,14 @@ namespace AvatarGo.Core
 
             // Trackers: runtime roles first; otherwise the pelvis is the one nearest hip height, the feet the two lowest.
             int pelvis = -1, footA = -1, footB = -1;
+            int runtimeFeet = 0;
             foreach (int t in liveTrackers)
             {
                 DeviceRole r = _devices[t].RuntimeRole;
                 if (r == DeviceRole.Pelvis) { if (pelvis >= 0) return Fail(CalibrationError.RoleConflict, "two trackers are assigned the waist role"); pelvis = t; }
+                if (r == DeviceRole.LeftFoot || r == DeviceRole.RightFoot) runtimeFeet++;
             }
+            if (runtimeFeet > 2) return Fail(CalibrationError.RoleConflict, "more than two trackers are assigned a foot role");
             // Without runtime roles, each tracker is scored by how well it fits the body: height off the expected
             // one plus horizontal distance from the HMD (a spare tracker on a table or the floor nearby scores badly).
             float Away(int t) => Horizontal(mean[t].Position - head.Position).Length();
@@ -229,7 +232,9 @@ namespace AvatarGo.Core
                 }
                 if (pelvis < 0) return Fail(CalibrationError.PelvisNotBetweenHeadAndFeet, "no tracker is at waist height");
             }
-            float FootScore(int t) => mean[t].Position.Y - floor + Away(t);
+            // Trackers the runtime calls feet come first; then the lowest near the body.
+            float FootScore(int t) => mean[t].Position.Y - floor + Away(t)
+                - (_devices[t].RuntimeRole == DeviceRole.LeftFoot || _devices[t].RuntimeRole == DeviceRole.RightFoot ? 100f : 0f);
             foreach (int t in liveTrackers)
             {
                 if (t == pelvis) continue;
