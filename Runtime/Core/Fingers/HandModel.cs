@@ -1,0 +1,155 @@
+using System;
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// One hand of an avatar for finger IK: per finger (thumb, index, middle, ring, little) its three joints, their
+    /// open rotations (the rig's rest pose) and closed rotations, and a fingertip point. Each joint closes about an
+    /// axis found from the hand's geometry — the palm normal from the finger bases, crossed with the finger's own
+    /// direction — so any rig works whatever local axis its bones bend about. Joint <c>j</c> of finger <c>f</c> has a
+    /// parameter <c>t</c> in [0, 1] blending its open rotation to its closed one (the paper's <c>t_f^j</c>).
+    /// </summary>
+    public sealed class HandModel
+    {
+        /// <summary>How far each joint closes, in degrees: proximal, intermediate, distal (fingers; thumb).</summary>
+        public static readonly float[] FingerClosing = { 80f, 100f, 70f };
+
+        /// <summary>How far each thumb joint closes, in degrees.</summary>
+        public static readonly float[] ThumbClosing = { 40f, 50f, 60f };
+
+        /// <summary>
+        /// Where the handle crosses the palm, as a fraction of the way from the wrist to the middle knuckle (0.8: at the
+        /// distal palm crease, where a power grip holds a handle).
+        /// </summary>
+        public const float GripAlongPalm = 0.8f;
+
+        internal readonly int[,] Joints = new int[5, 3];
+        internal readonly Pose[,] RestRelative = new Pose[5, 3];   // joint 0 relative to the hand, others to their parent joint
+        internal readonly Vector3[,] AxisLocal = new Vector3[5, 3];
+        internal readonly float[,] MaxRadians = new float[5, 3];
+        internal readonly Vector3[] TipLocal = new Vector3[5];
+        internal readonly bool[] HasFinger = new bool[5];
+
+        /// <summary>Builds the model of the left or right hand of <paramref name="map"/>'s rig from its rest pose.</summary>
+        /// <exception cref="ArgumentException">The rig has no hand bone or no complete finger on that side.</exception>
+        public HandModel(HumanoidMap map, bool left)
+        {
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            Map = map;
+            IsLeft = left;
+            Skeleton s = map.Skeleton;
+            HandJoint = map[left ? HumanBone.LeftHand : HumanBone.RightHand];
+            if (HandJoint < 0) throw new ArgumentException("The rig has no hand bone on that side.", nameof(map));
+            var rest = new Pose[s.JointCount];
+            var world = new Pose[s.JointCount];
+            s.GetRestLocal(rest);
+            s.ComputeWorld(rest, world);
+            Pose hand = world[HandJoint];
+
+            int index = map[HumanBones.Finger(left, 1, 0)], little = map[HumanBones.Finger(left, 4, 0)], middle = map[HumanBones.Finger(left, 2, 0)];
+            if (index < 0 || little < 0 || middle < 0) throw new ArgumentException("The hand needs index, middle and little fingers.", nameof(map));
+            Vector3 along = Vector3.Normalize(world[middle].Position - hand.Position);
+            Vector3 across = Vector3.Normalize(world[index].Position - world[little].Position);
+            // Palm normal from geometry: for a right hand, (finger direction × little-to-index) points out of the palm;
+            // a left hand is its mirror image.
+            Vector3 palm = Vector3.Normalize(left ? Vector3.Cross(across, along) : Vector3.Cross(along, across));
+            PalmNormalInHand = Vector3.Transform(palm, Quaternion.Conjugate(hand.Rotation));
+            AcrossInHand = Vector3.Transform(across, Quaternion.Conjugate(hand.Rotation));
+            AlongInHand = Vector3.Transform(along, Quaternion.Conjugate(hand.Rotation));
+            float handLength = Vector3.Distance(hand.Position, world[middle].Position);
+            FingerRadius = 0.0085f * handLength / 0.095f;
+            PalmCentreInHand = hand.InverseTransformPoint(hand.Position + (world[middle].Position - hand.Position) * GripAlongPalm + palm * FingerRadius);
+
+            for (int f = 0; f < 5; f++)
+            {
+                int j0 = map[HumanBones.Finger(left, f, 0)], j1 = map[HumanBones.Finger(left, f, 1)], j2 = map[HumanBones.Finger(left, f, 2)];
+                if (j0 < 0 || j1 < 0 || j2 < 0) continue;
+                HasFinger[f] = true;
+                Joints[f, 0] = j0; Joints[f, 1] = j1; Joints[f, 2] = j2;
+                RestRelative[f, 0] = world[j0].RelativeTo(hand);
+                RestRelative[f, 1] = world[j1].RelativeTo(world[j0]);
+                RestRelative[f, 2] = world[j2].RelativeTo(world[j1]);
+                TipLocal[f] = TipOf(s, world, j1, j2);
+                Vector3 direction = Vector3.Normalize(world[j2].Position - world[j0].Position);
+                Vector3 axis = Vectors.NormalizeOr(Vector3.Cross(direction, palm), Vector3.Cross(along, palm));
+                float[] closing = f == 0 ? ThumbClosing : FingerClosing;
+                int[] joints = { j0, j1, j2 };
+                for (int k = 0; k < 3; k++)
+                {
+                    AxisLocal[f, k] = Vector3.Transform(axis, Quaternion.Conjugate(world[joints[k]].Rotation));
+                    MaxRadians[f, k] = closing[k] * Rotations.Deg2Rad;
+                }
+            }
+            if (!HasFinger[1] || !HasFinger[2]) throw new ArgumentException("The hand needs complete index and middle fingers.", nameof(map));
+        }
+
+        /// <summary>The rig.</summary>
+        public HumanoidMap Map { get; }
+
+        /// <summary>True for the left hand.</summary>
+        public bool IsLeft { get; }
+
+        /// <summary>The hand (wrist) joint.</summary>
+        public int HandJoint { get; }
+
+        /// <summary>Whether finger <paramref name="finger"/> (0 thumb … 4 little) has all three joints.</summary>
+        public bool Has(int finger) => HasFinger[finger];
+
+        /// <summary>The radius of a finger (for contact): 8.5 mm for a hand 9.5 cm from wrist to middle knuckle, scaled.</summary>
+        public float FingerRadius { get; }
+
+        /// <summary>The palm centre (on the skin of the palm) in the hand joint's frame.</summary>
+        public Vector3 PalmCentreInHand { get; }
+
+        /// <summary>The unit normal out of the palm, in the hand joint's frame.</summary>
+        public Vector3 PalmNormalInHand { get; }
+
+        /// <summary>The unit direction across the palm from the little finger to the index, in the hand joint's frame.</summary>
+        public Vector3 AcrossInHand { get; }
+
+        /// <summary>The unit direction from the wrist toward the middle finger, in the hand joint's frame.</summary>
+        public Vector3 AlongInHand { get; }
+
+        /// <summary>
+        /// Where a controller sits in the hand joint's frame when held: its handle axis (+Y) across the palm toward
+        /// the index, its trigger side (+Z) away from the palm, its origin one handle radius plus a finger radius
+        /// off the palm centre — the palm centre on the grip.
+        /// </summary>
+        public Pose ControllerInHand(ControllerProfile profile)
+        {
+            if (profile == null) throw new ArgumentNullException(nameof(profile));
+            float radius = -profile.Shape.Distance(Vector3.Zero);
+            Vector3 up = AcrossInHand;
+            Vector3 forward = Vector3.Normalize(Vectors.ProjectOnPlane(PalmNormalInHand, up));
+            Vector3 origin = PalmCentreInHand + PalmNormalInHand * (radius + 0.002f);
+            return new Pose(origin, Rotations.LookRotation(forward, up));
+        }
+
+        /// <summary>Sets the finger joints of <paramref name="pose"/> from the ten-times-three parameters <paramref name="t"/> (finger-major).</summary>
+        public void Apply(ReadOnlySpan<float> t, SkeletonPose pose)
+        {
+            if (t.Length < 15) throw new ArgumentException("15 parameters (5 fingers × 3 joints) are needed.", nameof(t));
+            for (int f = 0; f < 5; f++)
+            {
+                if (!HasFinger[f]) continue;
+                for (int k = 0; k < 3; k++)
+                {
+                    int j = Joints[f, k];
+                    Quaternion bend = Quaternion.CreateFromAxisAngle(AxisLocal[f, k], Math.Max(0f, Math.Min(1f, t[f * 3 + k])) * MaxRadians[f, k]);
+                    Pose rest = pose.Skeleton.GetRestLocal(j);
+                    pose.Local[j] = new Pose(rest.Position, Quaternion.Normalize(rest.Rotation * bend));
+                }
+            }
+        }
+
+        private static Vector3 TipOf(Skeleton s, Pose[] world, int j1, int j2)
+        {
+            for (int c = j2 + 1; c < s.JointCount; c++)
+                if (s.GetParent(c) == j2) return world[c].RelativeTo(world[j2]).Position;
+            // No end point: extrapolate the last phalanx with the length of the previous one, times 0.8.
+            Vector3 d = world[j2].Position - world[j1].Position;
+            return Vector3.Transform(d * 0.8f, Quaternion.Conjugate(world[j2].Rotation));
+        }
+    }
+}
