@@ -13,8 +13,8 @@ namespace AvatarGo.Core
     /// </summary>
     /// <remarks>
     /// Each frame runs projected gradient descent to convergence (Polyak step size with backtracking, analytic
-    /// gradients from the SDF gradients and the joints' rotation axes, parameters clamped to [0, 1]), warm-started
-    /// from the previous frame; it stops when no parameter moves more than 1e-4 or after <see cref="MaxIterations"/>.
+    /// gradients from the SDF gradients and the joints' rotation axes, parameters clamped to [0, 1]), started
+    /// from the same half-closed hand every frame; it stops when no parameter moves more than 2e-5 or after <see cref="MaxIterations"/>.
     /// The result therefore depends on the controller's pose, not on the frame rate. No allocation per frame.
     /// </remarks>
     public sealed class FingerSolver
@@ -23,13 +23,13 @@ namespace AvatarGo.Core
         public const float Penalty = 10f;
 
         /// <summary>Iteration cap per finger per frame.</summary>
-        public const int MaxIterations = 30;
+        public const int MaxIterations = 60;
 
         /// <summary>Weight of the thumb-rest and trigger goals relative to surface distances.</summary>
         public const float GoalWeight = 0.5f;
 
         /// <summary>Weight (metres) of the term that keeps a finger's joints curling together.</summary>
-        public const float Smoothness = 0.01f;
+        public const float Smoothness = 0.03f;
 
         /// <summary>When the palm is farther than this from the controller's surface (m), the hand opens: nothing to hold.</summary>
         public const float ReachDistance = 0.03f;
@@ -113,7 +113,11 @@ namespace AvatarGo.Core
         private int SolveFinger(int f)
         {
             int o = f * 3;
-            float t0 = _solved[o], t1 = _solved[o + 1], t2 = _solved[o + 2];
+            // Every frame starts from the same half-closed configuration, not from the last frame: where the cost is
+            // flat (a long finger already wrapped past a thin handle) a warm start settles wherever it came from, which
+            // made the grip depend on the frame rate by up to 0.035 in t. Starting fresh makes the grip a function of
+            // this frame's controller pose alone.
+            float t0 = 0.5f, t1 = 0.5f, t2 = 0.5f;
             float cost = Cost(f, t0, t1, t2, out Vector3 grad);
             int iterations = 0;
             for (; iterations < MaxIterations; iterations++)
@@ -136,7 +140,7 @@ namespace AvatarGo.Core
                 if (!improved) break;
                 float moved = Math.Max(Math.Abs(n0 - t0), Math.Max(Math.Abs(n1 - t1), Math.Abs(n2 - t2)));
                 t0 = n0; t1 = n1; t2 = n2; cost = newCost; grad = newGrad;
-                if (moved < 1e-4f) { iterations++; break; }
+                if (moved < 2e-5f) { iterations++; break; }
             }
             _solved[o] = t0; _solved[o + 1] = t1; _solved[o + 2] = t2;
             return iterations;

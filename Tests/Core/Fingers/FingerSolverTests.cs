@@ -1,0 +1,150 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Numerics;
+using NUnit.Framework;
+
+namespace AvatarGo.Core.Tests
+{
+    public class FingerSolverTests
+    {
+        private static HumanoidMap MixamoHand() =>
+            HumanoidNaming.Detect(BvhReader.ReadFile(TestData.SharedMocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true }).Skeleton);
+
+        private static IEnumerable<ControllerProfile> Profiles()
+        {
+            string dir = Path.Combine(TestData.PackageRoot ?? ".", "Runtime", "ControllerProfiles");
+            if (!Directory.Exists(dir)) Assert.Ignore("controller profiles not found");
+            foreach (string file in Directory.GetFiles(dir, "*.json")) yield return ControllerProfile.Parse(File.ReadAllText(file));
+        }
+
+        /// <summary>The same rig with every finger bone's local frame turned arbitrarily (world geometry unchanged).</summary>
+        private static HumanoidMap WithTwistedLocalAxes(HumanoidMap map, int seed)
+        {
+            Skeleton s = map.Skeleton;
+            var rng = new Random(seed);
+            var turn = new Quaternion[s.JointCount];
+            for (int j = 0; j < turn.Length; j++)
+                turn[j] = HumanBones.IsFinger(map.BoneOf(j)) ? DeviceMountings.UniformRotation(rng) : Quaternion.Identity;
+            var rest = new Pose[s.JointCount];
+            var parents = new int[s.JointCount];
+            var ends = new bool[s.JointCount];
+            for (int j = 0; j < rest.Length; j++)
+            {
+                parents[j] = s.GetParent(j);
+                ends[j] = s.IsEndSite(j);
+                Pose local = s.GetRestLocal(j);
+                Quaternion parentTurn = parents[j] >= 0 ? turn[parents[j]] : Quaternion.Identity;
+                // new local = R_parent^-1 * old local * R_j: world rotations become old * R_j, positions unchanged.
+                rest[j] = new Pose(Vector3.Transform(local.Position, Quaternion.Conjugate(parentTurn)),
+                    Quaternion.Normalize(Quaternion.Conjugate(parentTurn) * local.Rotation * turn[j]));
+            }
+            return new HumanoidMap(new Skeleton(s.Names, parents, rest, ends), map.Pairs());
+        }
+
+        [Test]
+        public void EveryBundledProfileParsesWithItsGripPointInsideTheHandle()
+        {
+            int n = 0;
+            foreach (ControllerProfile p in Profiles())
+            {
+                n++;
+                Assert.That(p.Shape.Distance(Vector3.Zero), Is.LessThan(-0.01f), p.Name + ": grip origin inside the handle");
+                Assert.That(p.Shape.Distance(p.Trigger), Is.LessThan(0.01f), p.Name + ": trigger on the surface");
+                Assert.That(p.Shape.Distance(p.ThumbRest), Is.LessThan(0.01f), p.Name + ": thumb rest on the surface");
+            }
+            Assert.That(n, Is.GreaterThanOrEqualTo(3));
+            Assert.Throws<FormatException>(() => ControllerProfile.Parse("{\"format\": \"avatargo-controller-profile\", \"version\": 1, \"shapes\": []}"));
+        }
+
+        [Test]
+        public void ClosingDoesNotDependOnTheRigsLocalAxes()
+        {
+            HumanoidMap a = MixamoHand();
+            HumanoidMap b = WithTwistedLocalAxes(a, 3);
+            foreach (ControllerProfile profile in Profiles())
+                foreach (bool left in new[] { true, false })
+                {
+                    var ha = new HandModel(a, left);
+                    var hb = new HandModel(b, left);
+                    var sa = new FingerSolver(ha, profile);
+                    var sb = new FingerSolver(hb, profile);
+                    var hand = new Pose(new Vector3(0.2f, 1.1f, 0.3f), Rotations.AngleAxis(40f, new Vector3(0.3f, 1, 0.2f)));
+                    sa.Solve(hand, hand * ha.ControllerInHand(profile), GripMode.Hold);
+                    sb.Solve(hand, hand * hb.ControllerInHand(profile), GripMode.Hold);
+                    for (int i = 0; i < 15; i++)
+                        Assert.That(sb.T[i], Is.EqualTo(sa.T[i]).Within(0.01f), $"{profile.Name} {(left ? "left" : "right")} parameter {i}");
+                    Assert.That(sa.T[4], Is.GreaterThan(0.3f), "the index closes");
+                }
+        }
+
+        [Test]
+        public void OpenModeAndAnOutOfReachControllerGiveTheOpenPoseAtOnce()
+        {
+            HumanoidMap map = MixamoHand();
+            foreach (ControllerProfile profile in Profiles())
+            {
+                var hand = new HandModel(map, false);
+                var solver = new FingerSolver(hand, profile);
+                Pose h = Pose.Identity;
+                solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Hold);
+                Assert.That(solver.T[4], Is.GreaterThan(0.3f));
+                solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Open);
+                for (int i = 0; i < 15; i++) Assert.That(solver.T[i], Is.EqualTo(0f));
+                solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Hold);
+                var away = new Pose(new Vector3(0, 0, 0.5f), Quaternion.Identity) * (h * hand.ControllerInHand(profile));
+                for (int frame = 0; frame < 3; frame++)
+                {
+                    solver.Solve(h, away, GripMode.Hold);
+                    Assert.That(solver.OutOfReach, Is.True);
+                    for (int i = 0; i < 15; i++) Assert.That(solver.T[i], Is.EqualTo(0f), "open, and staying open");
+                }
+            }
+        }
+
+        [Test]
+        public void TheSameControllerPoseGivesTheSameGripAt72_90And144Hz()
+        {
+            HumanoidMap map = MixamoHand();
+            foreach (ControllerProfile profile in Profiles())
+            {
+                var hand = new HandModel(map, true);
+                Pose inHand = hand.ControllerInHand(profile);
+                var final = new float[3][];
+                int[] rates = { 72, 90, 144 };
+                for (int r = 0; r < rates.Length; r++)
+                {
+                    var solver = new FingerSolver(hand, profile);
+                    int frames = rates[r] * 2; // two seconds of a wobbling controller
+                    for (int i = 0; i <= frames; i++)
+                    {
+                        float t = i / (float)rates[r];
+                        var wobble = new Pose(new Vector3(0.002f * MathF.Sin(5 * t), 0.002f * MathF.Cos(3 * t), 0), Rotations.AngleAxis(3f * MathF.Sin(4 * t), Vector3.UnitY));
+                        solver.Solve(Pose.Identity, inHand * wobble, GripMode.Hold);
+                    }
+                    final[r] = solver.T.ToArray();
+                }
+                for (int i = 0; i < 15; i++)
+                {
+                    Assert.That(Math.Abs(final[0][i] - final[2][i]), Is.LessThanOrEqualTo(0.02f), $"{profile.Name} parameter {i}, 72 vs 144 Hz");
+                    Assert.That(Math.Abs(final[1][i] - final[2][i]), Is.LessThanOrEqualTo(0.02f), $"{profile.Name} parameter {i}, 90 vs 144 Hz");
+                }
+            }
+        }
+
+        [Test]
+        public void InvalidPosesKeepTheLastGrip()
+        {
+            var hand = new HandModel(MixamoHand(), false);
+            foreach (ControllerProfile profile in Profiles())
+            {
+                var solver = new FingerSolver(hand, profile);
+                solver.Solve(Pose.Identity, hand.ControllerInHand(profile), GripMode.Hold);
+                float index = solver.T[4];
+                solver.Solve(new Pose(new Vector3(float.NaN, 0, 0), Quaternion.Identity), hand.ControllerInHand(profile), GripMode.Hold);
+                Assert.That(solver.T[4], Is.EqualTo(index));
+                Assert.That(float.IsNaN(solver.T[4]), Is.False);
+            }
+        }
+    }
+}
