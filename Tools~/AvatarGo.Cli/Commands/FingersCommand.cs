@@ -1,0 +1,137 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Numerics;
+using System.Text.Json;
+using AvatarGo.Core;
+
+namespace AvatarGo.Cli.Commands;
+
+/// <summary>`avatargo fingers`: finger IK on every controller profile, under a moving controller, at 72/90/144 Hz.</summary>
+public sealed class FingersCommand : ICommand
+{
+    public string Name => "fingers";
+    public string Summary => "Finger IK on each controller profile: penetration, fingertip gaps, cost, frame-rate independence";
+    public string Help => """
+        avatargo fingers [--profile NAME] [--hand BVH] [--json]
+
+        Holds each controller profile (Runtime/ControllerProfiles/*.json) in both hands of an avatar
+        hand (default: the Mixamo hand of the shared clip mixamo_fingers_30fps.bvh, when present, else
+        --hand) while the controller wobbles in the hand for two seconds (2 mm, 3 deg), solving at 72,
+        90 and 144 Hz, and reports per profile and hand: the deepest penetration of a finger into the
+        surface (mm), the median and largest fingertip gap (mm), iterations and microseconds per frame
+        for both hands, bytes allocated per frame, and the largest difference in the final joint
+        parameters t between the three frame rates.
+          --profile NAME   only this profile (file name without .json)
+          --hand BVH       a BVH rig with finger bones to use as the hand
+          --json           print JSON
+        """;
+
+    public int Run(string[] args, TextWriter stdout, TextWriter stderr)
+    {
+        var a = new ArgReader(args, "json");
+        string only = a.String("profile");
+        string handFile = a.String("hand");
+        bool json = a.Flag("json");
+        a.ThrowOnUnknown(0);
+
+        string profilesDir = FindProfiles();
+        var profiles = Directory.GetFiles(profilesDir, "*.json").OrderBy(f => f, StringComparer.Ordinal)
+            .Select(f => ControllerProfile.Parse(File.ReadAllText(f))).Where(p => only == null || p.Name == only).ToList();
+        if (profiles.Count == 0) throw new UsageException($"no controller profile named '{only}' in {profilesDir}");
+        handFile ??= FindSharedHand() ?? throw new UsageException("no hand rig found: pass --hand FILE (a BVH with finger bones)");
+        HumanoidMap rig = HumanoidNaming.Detect(BvhReader.ReadFile(handFile, new BvhReadOptions { ToMetres = true }).Skeleton);
+
+        var rows = new List<Dictionary<string, object>>();
+        foreach (ControllerProfile profile in profiles)
+            foreach (bool left in new[] { true, false })
+                rows.Add(Measure(rig, left, profile));
+        if (json)
+        {
+            stdout.WriteLine(JsonSerializer.Serialize(new { hand = Path.GetFileName(handFile), machine = BenchCommand.Machine(), results = rows }, new JsonSerializerOptions { WriteIndented = true }));
+            return 0;
+        }
+        stdout.WriteLine($"hand rig: {Path.GetFileName(handFile)}; controller wobbling 2 mm / 3 deg for 2 s");
+        stdout.WriteLine("profile       hand   penetration  tip gap median/max   iterations  us/frame  bytes/frame  max dt(72,90,144 Hz)");
+        foreach (var r in rows)
+            stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"{r["profile"],-13} {r["hand"],-6} {r["max_penetration_mm"],8:0.00} mm   {r["tip_gap_median_mm"],6:0.0} / {r["tip_gap_max_mm"],-6:0.0} mm {r["iterations_per_frame"],9:0.0} {r["us_per_frame"],9:0.0} {r["bytes_per_frame"],10:0} {r["max_t_difference"],12:0.000}"));
+        return 0;
+    }
+
+    private static Dictionary<string, object> Measure(HumanoidMap rig, bool left, ControllerProfile profile)
+    {
+        var hand = new HandModel(rig, left);
+        Pose inHand = hand.ControllerInHand(profile);
+        int[] rates = { 72, 90, 144 };
+        var finals = new float[rates.Length][];
+        double penetration = 0, ticks = 0;
+        long bytes = 0;
+        int frames = 0, iterations = 0;
+        var gaps = new List<double>();
+        for (int r = 0; r < rates.Length; r++)
+        {
+            var solver = new FingerSolver(hand, profile);
+            int n = rates[r] * 2;
+            for (int i = 0; i <= n; i++)
+            {
+                float t = i / (float)rates[r];
+                var wobble = new Pose(new Vector3(0.002f * MathF.Sin(5 * t), 0.002f * MathF.Cos(3 * t), 0.001f * MathF.Sin(7 * t)), Rotations.AngleAxis(3f * MathF.Sin(4 * t), Vector3.UnitY));
+                Pose controller = inHand * wobble;
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                long t0 = Stopwatch.GetTimestamp();
+                solver.Solve(Pose.Identity, controller, GripMode.Hold);
+                long t1 = Stopwatch.GetTimestamp();
+                bytes += GC.GetAllocatedBytesForCurrentThread() - before;
+                if (i > 10) { ticks += t1 - t0; frames++; iterations += solver.LastIterations; }
+                for (int f = 0; f < 5; f++)
+                {
+                    if (!hand.Has(f)) continue;
+                    for (int p = 0; p < 3; p++) penetration = Math.Max(penetration, -solver.SurfaceGap(f, p));
+                    if (f > 0) gaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
+                }
+            }
+            finals[r] = solver.T.ToArray();
+        }
+        gaps.Sort();
+        double maxDiff = 0;
+        for (int i = 0; i < 15; i++)
+            for (int r = 1; r < rates.Length; r++) maxDiff = Math.Max(maxDiff, Math.Abs(finals[r][i] - finals[0][i]));
+        double usPerHand = ticks * 1e6 / Stopwatch.Frequency / frames;
+        return new Dictionary<string, object>
+        {
+            ["profile"] = profile.Name,
+            ["hand"] = left ? "left" : "right",
+            ["max_penetration_mm"] = penetration * 1000.0,
+            ["tip_gap_median_mm"] = gaps[gaps.Count / 2],
+            ["tip_gap_max_mm"] = gaps[^1],
+            ["iterations_per_frame"] = iterations / (double)frames,
+            ["us_per_frame"] = usPerHand * 2, // both hands
+            ["bytes_per_frame"] = bytes / (double)(frames + 33),
+            ["max_t_difference"] = maxDiff,
+        };
+    }
+
+    private static string FindProfiles()
+    {
+        for (string dir = AppContext.BaseDirectory; dir != null; dir = Path.GetDirectoryName(dir))
+        {
+            string candidate = Path.Combine(dir, "Runtime", "ControllerProfiles");
+            if (Directory.Exists(candidate)) return candidate;
+        }
+        throw new DirectoryNotFoundException("Runtime/ControllerProfiles not found above the tool's folder");
+    }
+
+    private static string FindSharedHand()
+    {
+        for (string dir = AppContext.BaseDirectory; dir != null; dir = Path.GetDirectoryName(dir))
+        {
+            string candidate = Path.Combine(dir, "..", "shared", "mocap", "mixamo_fingers_30fps.bvh");
+            if (File.Exists(candidate)) return Path.GetFullPath(candidate);
+        }
+        return null;
+    }
+}
