@@ -14,13 +14,13 @@ namespace AvatarGo.Core
     /// <remarks>
     /// Each frame runs projected gradient descent to convergence (Polyak step size with backtracking, analytic
     /// gradients from the SDF gradients and the joints' rotation axes, parameters clamped to [0, 1]), started
-    /// from the same half-closed hand every frame; it stops when no parameter moves more than 2e-5 or after <see cref="MaxIterations"/>.
+    /// from the same half-closed hand every frame; it stops when no parameter moves more than 2e-4 or after <see cref="MaxIterations"/>.
     /// The result therefore depends on the controller's pose, not on the frame rate. No allocation per frame.
     /// </remarks>
     public sealed class FingerSolver
     {
         /// <summary>Multiplier of penetration depths in the cost (the paper's penalisation factor).</summary>
-        public const float Penalty = 10f;
+        public const float Penalty = 30f;
 
         /// <summary>Iteration cap per finger per frame.</summary>
         public const int MaxIterations = 60;
@@ -120,11 +120,14 @@ namespace AvatarGo.Core
             float t0 = 0.5f, t1 = 0.5f, t2 = 0.5f;
             float cost = Cost(f, t0, t1, t2, out Vector3 grad);
             int iterations = 0;
+            float lastStep = float.MaxValue;
             for (; iterations < MaxIterations; iterations++)
             {
                 float g2 = grad.LengthSquared();
                 if (g2 < 1e-14f) break;
-                float step = Math.Min(cost / g2, 0.5f / (float)Math.Sqrt(g2));
+                // Polyak's step (exact when the minimum cost is 0), capped, and at most twice the last accepted one
+                // so that a finger resting against the surface does not backtrack from a huge step every iteration.
+                float step = Math.Min(Math.Min(cost / g2, 0.5f / (float)Math.Sqrt(g2)), 2f * lastStep);
                 bool improved = false;
                 float n0 = t0, n1 = t1, n2 = t2, newCost = cost;
                 Vector3 newGrad = grad;
@@ -138,9 +141,10 @@ namespace AvatarGo.Core
                     step *= 0.5f;
                 }
                 if (!improved) break;
+                lastStep = step;
                 float moved = Math.Max(Math.Abs(n0 - t0), Math.Max(Math.Abs(n1 - t1), Math.Abs(n2 - t2)));
                 t0 = n0; t1 = n1; t2 = n2; cost = newCost; grad = newGrad;
-                if (moved < 2e-5f) { iterations++; break; }
+                if (moved < 2e-4f) { iterations++; break; }
             }
             _solved[o] = t0; _solved[o + 1] = t1; _solved[o + 2] = t2;
             return iterations;

@@ -45,6 +45,7 @@ public sealed class FingersCommand : ICommand
         handFile ??= FindSharedHand() ?? throw new UsageException("no hand rig found: pass --hand FILE (a BVH with finger bones)");
         HumanoidMap rig = HumanoidNaming.Detect(BvhReader.ReadFile(handFile, new BvhReadOptions { ToMetres = true }).Skeleton);
 
+        Measure(rig, true, profiles[0]); // warm-up: let the JIT optimise before anything is timed
         var rows = new List<Dictionary<string, object>>();
         foreach (ControllerProfile profile in profiles)
             foreach (bool left in new[] { true, false })
