@@ -41,6 +41,7 @@ namespace AvatarGo.Core
         private readonly Vector3[] _points = new Vector3[3];
         private readonly Vector3[] _pointGradients = new Vector3[3];
         private Pose _handInController;
+        private readonly Pose[] _fingerBase = new Pose[5];
 
         /// <summary>Creates a solver for one hand and one controller.</summary>
         public FingerSolver(HandModel hand, ControllerProfile profile)
@@ -70,6 +71,7 @@ namespace AvatarGo.Core
             LastIterations = 0;
             if (!handWorld.IsValid || !controllerWorld.IsValid) return; // keep the last good grip
             _handInController = handWorld.RelativeTo(controllerWorld);
+            for (int f = 0; f < 5; f++) _fingerBase[f] = _handInController * _hand.RestRelative[f, 0];
             Vector3 palm = _handInController.TransformPoint(_hand.PalmCentreInHand);
             OutOfReach = _profile.Shape.Distance(palm) > ReachDistance;
             if (mode == GripMode.Open || OutOfReach)
@@ -191,11 +193,18 @@ namespace AvatarGo.Core
             return cost;
         }
 
+        // Forward kinematics of finger f in the controller frame. The quaternions stay unit to float precision
+        // over three products, so this hot path skips the renormalisation Pose's operator does.
         private void Chain(int f, float t0, float t1, float t2, out Pose w0, out Pose w1, out Pose w2)
         {
-            w0 = _handInController * _hand.RestRelative[f, 0] * Pose.FromRotation(Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 0], t0 * _hand.MaxRadians[f, 0]));
-            w1 = w0 * _hand.RestRelative[f, 1] * Pose.FromRotation(Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 1], t1 * _hand.MaxRadians[f, 1]));
-            w2 = w1 * _hand.RestRelative[f, 2] * Pose.FromRotation(Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 2], t2 * _hand.MaxRadians[f, 2]));
+            Pose b = _fingerBase[f];
+            Quaternion r0 = b.Rotation * Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 0], t0 * _hand.MaxRadians[f, 0]);
+            w0 = new Pose(b.Position, r0);
+            Pose rest1 = _hand.RestRelative[f, 1], rest2 = _hand.RestRelative[f, 2];
+            Quaternion r1 = r0 * rest1.Rotation * Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 1], t1 * _hand.MaxRadians[f, 1]);
+            w1 = new Pose(b.Position + Vector3.Transform(rest1.Position, r0), r1);
+            Quaternion r2 = r1 * rest2.Rotation * Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 2], t2 * _hand.MaxRadians[f, 2]);
+            w2 = new Pose(w1.Position + Vector3.Transform(rest2.Position, r1), r2);
         }
 
         private static float Clamp01(float v) => v < 0f ? 0f : v > 1f ? 1f : v;
