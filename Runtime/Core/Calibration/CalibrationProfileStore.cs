@@ -151,13 +151,7 @@ namespace AvatarGo.Core
             return new Pose(position, Quaternion.Normalize(rotation));
         }
 
-        private static Vector3 ReadVector(JsonNode node, string name)
-        {
-            double[] v = node.GetNumbers(name, 3);
-            var result = new Vector3((float)v[0], (float)v[1], (float)v[2]);
-            if (!Vectors.IsFinite(result)) throw new FormatException($"'{name}' must be finite.");
-            return result;
-        }
+        private static Vector3 ReadVector(JsonNode node, string name) => node.GetVector3(name);
 
         private static float Positive(double v, string name)
         {

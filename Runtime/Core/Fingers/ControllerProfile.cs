@@ -64,13 +64,7 @@ namespace AvatarGo.Core
             return new ControllerProfile(root.GetString("name"), root.GetString("displayName"), new SdfComposite(list), Vec(root, "trigger"), Vec(root, "thumbRest"));
         }
 
-        private static Vector3 Vec(JsonNode n, string name)
-        {
-            double[] v = n.GetNumbers(name, 3);
-            var r = new Vector3((float)v[0], (float)v[1], (float)v[2]);
-            if (!Vectors.IsFinite(r)) throw new FormatException($"'{name}' must be finite.");
-            return r;
-        }
+        private static Vector3 Vec(JsonNode n, string name) => n.GetVector3(name);
 
         private static float Length(JsonNode n, string name)
         {

@@ -77,6 +77,15 @@ namespace AvatarGo.Core
             return result;
         }
 
+        /// <summary>The member as a finite 3-vector written as an array of three numbers.</summary>
+        public System.Numerics.Vector3 GetVector3(string name)
+        {
+            double[] v = GetNumbers(name, 3);
+            var result = new System.Numerics.Vector3((float)v[0], (float)v[1], (float)v[2]);
+            if (!Vectors.IsFinite(result)) throw new FormatException($"'{name}' must be finite.");
+            return result;
+        }
+
         /// <summary>Parses JSON text (one value, nothing but white space after it).</summary>
         /// <exception cref="FormatException">The text is not valid JSON; the message names line and column.</exception>
         public static JsonNode Parse(string text)

@@ -14,7 +14,7 @@ namespace AvatarGo.Core
         /// <summary>Local transforms, one per joint, relative to the parent (roots: relative to <see cref="Origin"/>).</summary>
         public Pose[] Local { get; }
 
-        /// <summary>World transforms, valid after <see cref="UpdateWorld"/>.</summary>
+        /// <summary>World transforms, valid after <see cref="UpdateWorld()"/>.</summary>
         public Pose[] World { get; }
 
         /// <summary>The frame the roots are expressed in (identity: world).</summary>
@@ -38,6 +38,20 @@ namespace AvatarGo.Core
 
         /// <summary>Recomputes <see cref="World"/> from <see cref="Local"/> (forward kinematics).</summary>
         public void UpdateWorld() => Skeleton.ComputeWorld(Local, World, Origin);
+
+        /// <summary>
+        /// Recomputes the world transforms of the listed joints only, in the order given (parents first); their
+        /// parents' world transforms must be up to date. For solvers that touch one chain. Allocation-free.
+        /// </summary>
+        public void UpdateWorld(ReadOnlySpan<int> joints)
+        {
+            for (int i = 0; i < joints.Length; i++)
+            {
+                int j = joints[i];
+                int parent = Skeleton.GetParent(j);
+                World[j] = (parent < 0 ? Origin : World[parent]) * Local[j];
+            }
+        }
 
         /// <summary>Recomputes <see cref="Local"/> from <see cref="World"/>.</summary>
         public void UpdateLocal() => Skeleton.ComputeLocal(World, Local, Origin);

@@ -84,13 +84,13 @@ namespace AvatarGo.Core
                 {
                     // The bend is relative to the reference spine: start from it, not from last frame's result.
                     for (int i = 0; i < _spine.Length; i++) pose.Local[_spine[i]] = pose.Local[_spine[i]].WithRotation(_spineReference[i]);
-                    UpdatePath(pose, _spinePath);
+                    pose.UpdateWorld(_spinePath);
                     Quaternion bend = Rotations.IsUnit(targets.SpineBend) ? targets.SpineBend : Quaternion.Identity;
                     Quaternion share = Quaternion.Slerp(Quaternion.Identity, bend, 1f / _spine.Length);
                     for (int i = 0; i < _spine.Length; i++)
                     {
                         RotateWorld(pose, _spine[i], share);
-                        UpdatePath(pose, _spinePath);
+                        pose.UpdateWorld(_spinePath);
                     }
                     for (int pass = 0; pass < MaxSpinePasses; pass++)
                     {
@@ -100,7 +100,7 @@ namespace AvatarGo.Core
                             Vector3 pivot = w[_spine[i]].Position;
                             Quaternion toTarget = Rotations.FromTo(w[_head].Position - pivot, targets.Head.Position - pivot);
                             RotateWorld(pose, _spine[i], pass < 2 ? Quaternion.Slerp(Quaternion.Identity, toTarget, 0.5f) : toTarget);
-                            UpdatePath(pose, _spinePath);
+                            pose.UpdateWorld(_spinePath);
                         }
                     }
                 }
@@ -140,17 +140,6 @@ namespace AvatarGo.Core
             int p = pose.Skeleton.GetParent(clavicle);
             pose.World[clavicle] = (p < 0 ? pose.Origin : pose.World[p]) * pose.Local[clavicle];
             return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
-        }
-
-        private static void UpdatePath(SkeletonPose pose, int[] path)
-        {
-            Pose[] w = pose.World;
-            for (int i = 0; i < path.Length; i++)
-            {
-                int j = path[i];
-                int parent = pose.Skeleton.GetParent(j);
-                w[j] = (parent < 0 ? pose.Origin : w[parent]) * pose.Local[j];
-            }
         }
 
         private static Quaternion ParentRotation(SkeletonPose pose, int joint)

@@ -16,7 +16,7 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// Solves one limb. The world poses of the chain's root's ancestors must be up to date; on return the world
-        /// poses of the chain's joints are too (their other descendants are not: call <see cref="SkeletonPose.UpdateWorld"/>).
+        /// poses of the chain's joints are too (their other descendants are not: call <see cref="SkeletonPose.UpdateWorld()"/>).
         /// </summary>
         public static LimbResult Solve(SkeletonPose pose, LimbChain chain, Pose goal, Vector3 hint)
         {
@@ -74,16 +74,7 @@ namespace AvatarGo.Core
             UpdatePath(pose, chain, start);
         }
 
-        private static void UpdatePath(SkeletonPose pose, LimbChain chain, int start)
-        {
-            Pose[] w = pose.World;
-            int[] path = chain.Path;
-            for (int i = start; i < path.Length; i++)
-            {
-                int j = path[i];
-                int parent = pose.Skeleton.GetParent(j);
-                w[j] = (parent < 0 ? pose.Origin : w[parent]) * pose.Local[j];
-            }
-        }
+        private static void UpdatePath(SkeletonPose pose, LimbChain chain, int start) =>
+            pose.UpdateWorld(new ReadOnlySpan<int>(chain.Path, start, chain.Path.Length - start));
     }
 }
