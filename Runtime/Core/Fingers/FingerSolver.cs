@@ -14,7 +14,7 @@ namespace AvatarGo.Core
     /// <remarks>
     /// Each frame runs projected gradient descent to convergence (Polyak step size with backtracking, analytic
     /// gradients from the SDF gradients and the joints' rotation axes, parameters clamped to [0, 1]), started
-    /// from the same half-closed hand every frame; it stops when no parameter moves more than 2e-4 or after <see cref="MaxIterations"/>.
+    /// every frame from the grip solved once for the nominal hold (not from the last frame); it stops when no parameter moves more than 2e-3 (0.2° at a joint) or after <see cref="MaxIterations"/>.
     /// The result therefore depends on the controller's pose, not on the frame rate. No allocation per frame.
     /// </remarks>
     public sealed class FingerSolver
@@ -37,6 +37,7 @@ namespace AvatarGo.Core
         private readonly HandModel _hand;
         private readonly ControllerProfile _profile;
         private readonly float[] _solved = new float[15];
+        private readonly float[] _start = new float[15];
         private readonly float[] _t = new float[15];
         private readonly Vector3[] _points = new Vector3[3];
         private readonly Vector3[] _pointGradients = new Vector3[3];
@@ -48,6 +49,13 @@ namespace AvatarGo.Core
         {
             _hand = hand ?? throw new ArgumentNullException(nameof(hand));
             _profile = profile ?? throw new ArgumentNullException(nameof(profile));
+            // The start of every frame's descent: the grip solved once, from half-closed, with the controller
+            // exactly where this hand holds it. Near every frame's answer, and the same whatever the frame rate.
+            for (int i = 0; i < 15; i++) _start[i] = 0.5f;
+            Solve(Pose.Identity, hand.ControllerInHand(profile), GripMode.Hold);
+            Array.Copy(_solved, _start, 15);
+            Array.Clear(_solved, 0, 15);
+            Array.Clear(_t, 0, 15);
         }
 
         /// <summary>The hand.</summary>
@@ -115,11 +123,11 @@ namespace AvatarGo.Core
         private int SolveFinger(int f)
         {
             int o = f * 3;
-            // Every frame starts from the same half-closed configuration, not from the last frame: where the cost is
-            // flat (a long finger already wrapped past a thin handle) a warm start settles wherever it came from, which
-            // made the grip depend on the frame rate by up to 0.035 in t. Starting fresh makes the grip a function of
-            // this frame's controller pose alone.
-            float t0 = 0.5f, t1 = 0.5f, t2 = 0.5f;
+            // Every frame starts from the same place (_start), not from the last frame: where the cost is flat (a
+            // long finger already wrapped past a thin handle) a warm start settles wherever it came from, which made
+            // the grip depend on the frame rate by up to 0.035 in t. This way the grip is a function of this frame's
+            // controller pose alone.
+            float t0 = _start[o], t1 = _start[o + 1], t2 = _start[o + 2];
             float cost = Cost(f, t0, t1, t2, out Vector3 grad);
             int iterations = 0;
             float lastStep = float.MaxValue;
@@ -146,7 +154,7 @@ namespace AvatarGo.Core
                 lastStep = step;
                 float moved = Math.Max(Math.Abs(n0 - t0), Math.Max(Math.Abs(n1 - t1), Math.Abs(n2 - t2)));
                 t0 = n0; t1 = n1; t2 = n2; cost = newCost; grad = newGrad;
-                if (moved < 2e-4f) { iterations++; break; }
+                if (moved < 2e-3f) { iterations++; break; }
             }
             _solved[o] = t0; _solved[o + 1] = t1; _solved[o + 2] = t2;
             return iterations;

@@ -76,8 +76,7 @@ namespace AvatarGo.Core
                 }
                 default:
                 {
-                    Quaternion inverse = Quaternion.Conjugate(Rotation);
-                    Vector3 q = Vector3.Transform(p - A, inverse);
+                    Vector3 q = Vector3.Transform(p - A, Quaternion.Conjugate(Rotation));
                     Vector3 e = Vector3.Abs(q) - B;
                     Vector3 outside = Vector3.Max(e, Vector3.Zero);
                     float outsideLength = outside.Length();

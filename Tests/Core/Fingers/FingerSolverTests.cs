@@ -146,5 +146,26 @@ namespace AvatarGo.Core.Tests
                 Assert.That(float.IsNaN(solver.T[4]), Is.False);
             }
         }
+
+        [Test]
+        public void PointingAndInputDrivenGrips()
+        {
+            var hand = new HandModel(MixamoHand(), false);
+            foreach (ControllerProfile profile in Profiles())
+            {
+                var solver = new FingerSolver(hand, profile);
+                Pose c = hand.ControllerInHand(profile);
+                solver.Solve(Pose.Identity, c, GripMode.Hold);
+                float[] hold = solver.T.ToArray();
+                solver.Solve(Pose.Identity, c, GripMode.Point);
+                Assert.That(solver.T[3] + solver.T[4] + solver.T[5], Is.EqualTo(0f), profile.Name + ": index extended");
+                Assert.That(solver.T[7], Is.EqualTo(hold[7]).Within(1e-6f), profile.Name + ": middle still holds");
+                solver.Solve(Pose.Identity, c, GripMode.InputDriven, trigger: 1f, grip: 0.5f);
+                Assert.That(solver.T[4], Is.EqualTo(hold[4]).Within(1e-6f), profile.Name + ": full trigger = index on the trigger");
+                Assert.That(solver.T[7], Is.EqualTo(0.5f * hold[7]).Within(1e-6f), profile.Name + ": half grip = half closed");
+                solver.Solve(Pose.Identity, c, GripMode.InputDriven, trigger: 0f, grip: 1f);
+                Assert.That(solver.T[4], Is.EqualTo(0f), profile.Name + ": released trigger = index pointing");
+            }
+        }
     }
 }
