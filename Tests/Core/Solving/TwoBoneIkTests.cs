@@ -268,6 +268,11 @@ namespace AvatarGo.Core.Tests
             Assert.That(float.IsNaN(r.DistanceLeft), Is.False);
         }
 
+        private static void SolveMany(SkeletonPose pose, LimbChain chain, Pose goal, Vector3 hint, int count)
+        {
+            for (int i = 0; i < count; i++) TwoBoneIk.Solve(pose, chain, goal, hint);
+        }
+
         [Test]
         public void AllocatesNothing()
         {
@@ -277,10 +282,18 @@ namespace AvatarGo.Core.Tests
             var chain = new LimbChain(s, Root, Middle, End);
             var goal = new Pose(pose.World[Root].Position + new Vector3(0.1f, -0.5f, 0.1f), Quaternion.Identity);
             Vector3 hint = pose.World[Root].Position + Vector3.UnitZ;
-            for (int i = 0; i < 1000; i++) TwoBoneIk.Solve(pose, chain, goal, hint);
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            for (int i = 0; i < 10000; i++) TwoBoneIk.Solve(pose, chain, goal, hint);
-            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, Is.EqualTo(0));
+            SolveMany(pose, chain, goal, hint, 1000);
+            // Windows inside a loop, the loop of solves in a method of its own that has run before: a long loop in
+            // a not yet optimised method switches to optimised code in the middle (on-stack replacement), which
+            // allocates a few bytes of the runtime's own.
+            var bytes = new long[4];
+            for (int k = 0; k < bytes.Length; k++)
+            {
+                long t0 = GC.GetAllocatedBytesForCurrentThread();
+                SolveMany(pose, chain, goal, hint, 5000);
+                bytes[k] = GC.GetAllocatedBytesForCurrentThread() - t0;
+            }
+            Assert.That(bytes, Is.EqualTo(new long[bytes.Length]));
         }
     }
 }
