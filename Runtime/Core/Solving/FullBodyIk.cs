@@ -11,14 +11,19 @@ namespace AvatarGo.Core
     /// </summary>
     /// <remarks>
     /// Spine: the bend <see cref="BodyTargets.SpineBend"/> (the paper's angle α between w0 and wt, with its axis) is
-    /// first shared equally by the spine joints (Spine, Chest, UpperChest, Neck as present), which curves the back
-    /// instead of folding it at one joint; then cyclic-coordinate-descent passes (each joint taking half of its correction in the first two, to
-    /// spread the bend, then all of it; at most six, until the head is within 1 mm), bring the head joint onto its target where the spine's length allows.
+    /// shared equally by the spine joints (Spine, Chest, UpperChest, Neck as present): starting from the reference
+    /// pose each frame, every joint turns by the same φ about the bend's axis (α/n to begin with), which curves the
+    /// back instead of folding it at one joint. φ is then refined (secant method, at most 12 steps) until the
+    /// distance from the first spine joint to the head joint is the target's, and one swing at the first spine
+    /// joint aims the head at its target: the head ends within 0.1 mm of its target wherever the spine can reach.
+    /// With no bend (upright wearer) the axis is the hips' right axis, so a shorter reach curves the back forward.
     /// </remarks>
     public sealed class FullBodyIk
     {
-        private const int MaxSpinePasses = 6;
-        private const float SpineTolerance = 0.001f;
+        private const int SpineIterations = 12;
+        private const float SpineTolerance = 1e-4f;
+        private const float MaxSpineJointRadians = 1.2f;
+        private const int SpinePolishPasses = 4;
         private readonly int _hips;
         private readonly int _head;
         private readonly int[] _spine;
@@ -80,30 +85,7 @@ namespace AvatarGo.Core
 
             if (targets.HeadActive && targets.Head.IsValid)
             {
-                if (_spine.Length > 0)
-                {
-                    // The bend is relative to the reference spine: start from it, not from last frame's result.
-                    for (int i = 0; i < _spine.Length; i++) pose.Local[_spine[i]] = pose.Local[_spine[i]].WithRotation(_spineReference[i]);
-                    pose.UpdateWorld(_spinePath);
-                    Quaternion bend = Rotations.IsUnit(targets.SpineBend) ? targets.SpineBend : Quaternion.Identity;
-                    Quaternion share = Quaternion.Slerp(Quaternion.Identity, bend, 1f / _spine.Length);
-                    for (int i = 0; i < _spine.Length; i++)
-                    {
-                        RotateWorld(pose, _spine[i], share);
-                        pose.UpdateWorld(_spinePath);
-                    }
-                    for (int pass = 0; pass < MaxSpinePasses; pass++)
-                    {
-                        if (Vector3.Distance(w[_head].Position, targets.Head.Position) < SpineTolerance) break;
-                        for (int i = _spine.Length - 1; i >= 0; i--)
-                        {
-                            Vector3 pivot = w[_spine[i]].Position;
-                            Quaternion toTarget = Rotations.FromTo(w[_head].Position - pivot, targets.Head.Position - pivot);
-                            RotateWorld(pose, _spine[i], pass < 2 ? Quaternion.Slerp(Quaternion.Identity, toTarget, 0.5f) : toTarget);
-                            pose.UpdateWorld(_spinePath);
-                        }
-                    }
-                }
+                if (_spine.Length > 0) SolveSpine(pose, targets.SpineBend, targets.Head.Position);
                 report.HeadDistanceLeft = Vector3.Distance(w[_head].Position, targets.Head.Position);
                 SetWorldRotation(pose, _head, targets.Head.Rotation);
                 pose.UpdateWorld();
@@ -115,6 +97,72 @@ namespace AvatarGo.Core
             if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightClavicle, _rightClavicleReference, in targets.RightHand);
             pose.UpdateWorld();
             return report;
+        }
+
+        // The spine: every spine joint takes the same turn φ about the bend's axis, on top of its reference rotation
+        // (a smooth curve rather than a fold at one joint); φ starts at α/n and is refined by the secant method
+        // until the first spine joint to head distance is the target's (the curve's chord); then one swing at the
+        // first spine joint aims the head at its target. Exact to 0.1 mm when the spine can reach.
+        private void SolveSpine(SkeletonPose pose, Quaternion spineBend, Vector3 headTarget)
+        {
+            Pose[] w = pose.World;
+            Quaternion bend = Rotations.IsUnit(spineBend) ? Quaternion.Normalize(spineBend) : Quaternion.Identity;
+            if (bend.W < 0f) bend = new Quaternion(-bend.X, -bend.Y, -bend.Z, -bend.W);
+            float sinHalf = new Vector3(bend.X, bend.Y, bend.Z).Length();
+            float alpha = 2f * MathF.Atan2(sinHalf, bend.W);
+            // Upright (no bend to take the axis from): a bend forward, about the hips' right axis.
+            Vector3 axis = alpha > 1e-3f
+                ? new Vector3(bend.X, bend.Y, bend.Z) / sinHalf
+                : Vector3.Transform(Vector3.UnitX, w[_hips].Rotation);
+            Vector3 origin = w[_spine[0]].Position;
+            float wanted = Vector3.Distance(origin, headTarget);
+
+            float phiA = alpha / _spine.Length;
+            float fA = BendSpine(pose, axis, phiA) - wanted;
+            float bestPhi = phiA, bestF = Math.Abs(fA);
+            // Too long: bend more (away from upright, the reference's straightest); too short: bend less.
+            float direction = phiA >= 0f ? 1f : -1f;
+            float phiB = phiA + (fA > 0f ? 0.02f : -0.02f) * direction;
+            for (int i = 0; i < SpineIterations && bestF > SpineTolerance; i++)
+            {
+                float fB = BendSpine(pose, axis, phiB) - wanted;
+                if (Math.Abs(fB) < bestF) { bestF = Math.Abs(fB); bestPhi = phiB; }
+                float slope = (fB - fA) / (phiB - phiA);
+                if (!(Math.Abs(slope) > 1e-6f)) break;
+                float next = phiB - fB / slope;
+                next = Math.Max(phiB - 0.3f, Math.Min(phiB + 0.3f, next));
+                next = Math.Max(-MaxSpineJointRadians, Math.Min(MaxSpineJointRadians, next));
+                if (!Vectors.IsFinite(next) || next == phiB) break;
+                phiA = phiB; fA = fB; phiB = next;
+            }
+            BendSpine(pose, axis, bestPhi);
+            Quaternion aim = Rotations.FromTo(w[_head].Position - origin, headTarget - origin);
+            RotateWorld(pose, _spine[0], aim);
+            pose.UpdateWorld(_spinePath);
+            // What the one-axis curve cannot reach (a target that needs the back's reference curve undone in another
+            // plane) is polished by cyclic coordinate descent, top joint first.
+            for (int pass = 0; pass < SpinePolishPasses && Vector3.Distance(w[_head].Position, headTarget) > SpineTolerance; pass++)
+                for (int i = _spine.Length - 1; i >= 0; i--)
+                {
+                    Vector3 pivot = w[_spine[i]].Position;
+                    RotateWorld(pose, _spine[i], Rotations.FromTo(w[_head].Position - pivot, headTarget - pivot));
+                    pose.UpdateWorld(_spinePath);
+                }
+        }
+
+        // Sets the spine to its reference with each joint turned by phi about the world axis; returns the
+        // distance from the first spine joint to the head.
+        private float BendSpine(SkeletonPose pose, Vector3 axis, float phi)
+        {
+            Quaternion turn = Quaternion.CreateFromAxisAngle(axis, phi);
+            for (int i = 0; i < _spine.Length; i++) pose.Local[_spine[i]] = pose.Local[_spine[i]].WithRotation(_spineReference[i]);
+            pose.UpdateWorld(_spinePath);
+            for (int i = 0; i < _spine.Length; i++)
+            {
+                RotateWorld(pose, _spine[i], turn);
+                pose.UpdateWorld(_spinePath);
+            }
+            return Vector3.Distance(pose.World[_spine[0]].Position, pose.World[_head].Position);
         }
 
         // An arm whose hand cannot reach its goal first raises or pulls the clavicle toward it (up to

@@ -6,72 +6,150 @@ namespace AvatarGo.Core
     /// <summary>
     /// Analytic two-bone IK on a <see cref="SkeletonPose"/>: bends the middle joint so the end joint can reach the
     /// goal (law of cosines), aims the root at the goal, twists the limb about the root→goal axis so the middle
-    /// joint lies toward the hint, then gives the end joint the goal rotation. Bone lengths are never changed.
-    /// An unreachable goal leaves the limb fully stretched toward it. Allocation-free.
+    /// joint lies toward the hint, then gives the end joint the goal rotation. Only joint rotations change (bone
+    /// lengths never do), and Local and World are kept in step along the chain. Allocation-free.
     /// </summary>
+    /// <remarks>
+    /// Unreachable goals: a goal farther than the two bones reach leaves the limb stretched straight at it
+    /// (to within <see cref="StretchMargin"/>, so the bend plane survives to the next frame), and one closer than
+    /// the limb can fold leaves it folded as far as it goes (interior angle of the middle joint
+    /// <see cref="MinFoldDistance"/> short of the bones' length difference) toward it; both are reported as not
+    /// reached with the distance left. A hint on the root→goal line (or not finite) gives no plane: the limb keeps
+    /// its current bend plane. A goal whose rotation is not a unit quaternion still positions the limb and leaves
+    /// the end joint's local rotation alone. A goal whose position is not finite leaves the limb untouched and is
+    /// reported as not reached, infinitely far. Nothing here ever writes NaN.
+    /// </remarks>
     public static class TwoBoneIk
     {
         /// <summary>A goal counts as reached when the end joint ends within this distance of it (1 mm).</summary>
         public const float ReachedTolerance = 0.001f;
 
+        /// <summary>How far short of full extension (in metres) a stretched limb stops: 0.01 mm.</summary>
+        public const float StretchMargin = 1e-5f;
+
+        /// <summary>How far beyond the tightest fold (in metres) a folded limb stops: 0.1 mm.</summary>
+        public const float MinFoldDistance = 1e-4f;
+
+        private const float MinBoneLength = 1e-6f;
+
         /// <summary>
-        /// Solves one limb. The world poses of the chain's root's ancestors must be up to date; on return the world
+        /// Solves one limb. The world poses of the chain root's ancestors must be up to date; on return the world
         /// poses of the chain's joints are too (their other descendants are not: call <see cref="SkeletonPose.UpdateWorld()"/>).
         /// </summary>
+        /// <param name="pose">The pose to change; its current content is the starting point.</param>
+        /// <param name="chain">The limb.</param>
+        /// <param name="goal">World pose for the end joint.</param>
+        /// <param name="hint">World position the middle joint should bend toward.</param>
+        /// <returns>Whether the end joint reached the goal (within <see cref="ReachedTolerance"/>) and how far it is from it.</returns>
         public static LimbResult Solve(SkeletonPose pose, LimbChain chain, Pose goal, Vector3 hint)
         {
+            if (pose == null) throw new ArgumentNullException(nameof(pose));
+            if (chain == null) throw new ArgumentNullException(nameof(chain));
             Pose[] w = pose.World;
             UpdatePath(pose, chain, 0);
+            if (!Vectors.IsFinite(goal.Position)) return new LimbResult(false, float.PositiveInfinity);
+            int middleIndex = IndexInPath(chain, chain.Middle);
             Vector3 a = w[chain.Root].Position, b = w[chain.Middle].Position, c = w[chain.End].Position;
-            if (!goal.IsValid || !Vectors.IsFinite(hint)) return new LimbResult(false, float.NaN);
             float lab = Vector3.Distance(a, b), lbc = Vector3.Distance(b, c);
-            float reach = lab + lbc;
             Vector3 toGoal = goal.Position - a;
             float goalDistance = toGoal.Length();
-            float min = Math.Abs(lab - lbc) + 1e-4f;
-            float d = Math.Max(min, Math.Min(goalDistance, reach - 1e-5f));
+            bool hasHint = Vectors.IsFinite(hint);
 
-            // 1. Bend the middle joint: interior angle from the law of cosines.
-            float cosWanted = Math.Max(-1f, Math.Min(1f, (lab * lab + lbc * lbc - d * d) / (2f * lab * lbc)));
-            float cosNow = Math.Max(-1f, Math.Min(1f, Vector3.Dot(a - b, c - b) / Math.Max(lab * lbc, 1e-12f)));
-            Vector3 axis = Vector3.Cross(c - b, a - b);
-            if (axis.LengthSquared() < 1e-12f) axis = Vector3.Cross(c - a, hint - a);
-            if (axis.LengthSquared() < 1e-12f) axis = Vector3.Cross(c - a, Math.Abs((c - a).Y) < 0.9f * (c - a).Length() ? Vector3.UnitY : Vector3.UnitX);
-            axis = Vectors.NormalizeOr(axis, Vector3.UnitX);
-            float delta = MathF.Acos(cosNow) - MathF.Acos(cosWanted);
-            RotateJoint(pose, chain, chain.Middle, Quaternion.CreateFromAxisAngle(axis, delta));
-            c = w[chain.End].Position;
-            b = w[chain.Middle].Position;
+            // 1. Bend the middle joint to the interior angle that puts the end at the goal's distance (law of cosines).
+            if (lab > MinBoneLength && lbc > MinBoneLength)
+            {
+                float reach = lab + lbc;
+                float fold = Math.Abs(lab - lbc) + MinFoldDistance;
+                float d = Math.Max(fold, Math.Min(goalDistance, reach - StretchMargin));
+                float cosWanted = Math.Max(-1f, Math.Min(1f, (lab * lab + lbc * lbc - d * d) / (2f * lab * lbc)));
+                Vector3 ba = a - b, bc = c - b;
+                Vector3 normal = Vector3.Cross(bc, ba);
+                float angleNow = MathF.Atan2(normal.Length(), Vector3.Dot(ba, bc));
+                float delta = angleNow - MathF.Acos(cosWanted);
+                // Turning bc about bc×ba by +δ closes the angle by δ. A straight (or fully folded) limb has no plane
+                // of its own: any axis perpendicular to bc then changes the angle by |δ| the right way; take the
+                // hint's plane so the twist below has little to do.
+                if (normal.LengthSquared() < 1e-14f * lab * lab * lbc * lbc)
+                {
+                    normal = hasHint ? Vector3.Cross(bc, hint - b) : Vector3.Zero;
+                    if (normal.LengthSquared() < 1e-14f * lbc * lbc) normal = Vector3.Cross(bc, Math.Abs(bc.Y) < 0.9f * lbc ? Vector3.UnitY : Vector3.UnitX);
+                }
+                if (Vectors.IsFinite(delta) && Math.Abs(delta) > 0f)
+                    RotateJoint(pose, chain, middleIndex, Quaternion.CreateFromAxisAngle(Vectors.NormalizeOr(normal, Vector3.UnitX), delta));
+                b = w[chain.Middle].Position;
+                c = w[chain.End].Position;
+            }
 
             // 2. Aim the root at the goal, and 3. twist about the root→goal axis so the middle joint faces the hint.
             Vector3 aim = goalDistance > 1e-6f ? toGoal : c - a;
-            Quaternion swing = Rotations.FromTo(c - a, aim);
+            Quaternion swing = FromTo(c - a, aim);
             Vector3 u = Vectors.NormalizeOr(aim, Vector3.UnitY);
-            Vector3 bAfter = Vector3.Transform(b - a, swing);
-            Vector3 pb = Vectors.ProjectOnPlane(bAfter, u), ph = Vectors.ProjectOnPlane(hint - a, u);
-            Quaternion twist = Quaternion.Identity;
-            if (pb.LengthSquared() > 1e-10f && ph.LengthSquared() > 1e-10f)
-                twist = Rotations.AngleAxis(Vectors.SignedAngleDegrees(pb, ph, u), u);
-            RotateJoint(pose, chain, chain.Root, Quaternion.Normalize(twist * swing));
+            Quaternion turn = swing;
+            if (hasHint)
+            {
+                Vector3 pb = Vectors.ProjectOnPlane(Vector3.Transform(b - a, swing), u);
+                Vector3 ph = Vectors.ProjectOnPlane(hint - a, u);
+                if (pb.LengthSquared() > 1e-12f && ph.LengthSquared() > 1e-10f)
+                {
+                    float twistAngle = MathF.Atan2(Vector3.Dot(u, Vector3.Cross(pb, ph)), Vector3.Dot(pb, ph));
+                    turn = Quaternion.CreateFromAxisAngle(u, twistAngle) * swing;
+                }
+            }
+            RotateJoint(pose, chain, 0, Quaternion.Normalize(turn));
 
             // 4. The end joint takes the goal's rotation.
             int endParent = pose.Skeleton.GetParent(chain.End);
-            pose.Local[chain.End] = pose.Local[chain.End].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(w[endParent].Rotation) * goal.Rotation));
-            w[chain.End] = w[endParent] * pose.Local[chain.End];
+            if (Rotations.IsUnit(goal.Rotation))
+            {
+                Quaternion local = Quaternion.Normalize(Quaternion.Conjugate(w[endParent].Rotation) * goal.Rotation);
+                pose.Local[chain.End] = pose.Local[chain.End].WithRotation(local);
+                w[chain.End] = w[endParent] * pose.Local[chain.End];
+            }
             float left = Vector3.Distance(w[chain.End].Position, goal.Position);
+            if (!Vectors.IsFinite(left)) left = float.PositiveInfinity;
             return new LimbResult(left <= ReachedTolerance, left);
         }
 
-        /// <summary>Applies a world-space rotation <paramref name="delta"/> to joint <paramref name="joint"/> of the chain and refreshes the chain below it.</summary>
-        private static void RotateJoint(SkeletonPose pose, LimbChain chain, int joint, Quaternion delta)
+        /// <summary>
+        /// The shortest rotation taking <paramref name="from"/> to <paramref name="to"/>, computed in double precision:
+        /// near-opposite directions (a limb swung through almost 180°) lose a millimetre in single precision.
+        /// </summary>
+        private static Quaternion FromTo(Vector3 from, Vector3 to)
+        {
+            double fx = from.X, fy = from.Y, fz = from.Z, tx = to.X, ty = to.Y, tz = to.Z;
+            double fl = Math.Sqrt(fx * fx + fy * fy + fz * fz), tl = Math.Sqrt(tx * tx + ty * ty + tz * tz);
+            if (!(fl > 1e-12) || !(tl > 1e-12) || double.IsInfinity(fl) || double.IsInfinity(tl)) return Quaternion.Identity;
+            fx /= fl; fy /= fl; fz /= fl; tx /= tl; ty /= tl; tz /= tl;
+            double cx = fy * tz - fz * ty, cy = fz * tx - fx * tz, cz = fx * ty - fy * tx;
+            double w = 1.0 + fx * tx + fy * ty + fz * tz;
+            if (w < 1e-12)
+            {
+                // Opposite: half a turn about any axis perpendicular to from.
+                if (Math.Abs(fx) < 0.9) { cx = 0; cy = -fz; cz = fy; } else { cx = fz; cy = 0; cz = -fx; }
+                w = 0;
+            }
+            double n = Math.Sqrt(cx * cx + cy * cy + cz * cz + w * w);
+            return new Quaternion((float)(cx / n), (float)(cy / n), (float)(cz / n), (float)(w / n));
+        }
+
+        private static int IndexInPath(LimbChain chain, int joint)
+        {
+            int[] path = chain.Path;
+            for (int i = 0; i < path.Length; i++)
+                if (path[i] == joint) return i;
+            return 0;
+        }
+
+        /// <summary>Applies a world-space rotation <paramref name="delta"/> to the chain's joint at <paramref name="pathIndex"/> and refreshes the chain below it.</summary>
+        private static void RotateJoint(SkeletonPose pose, LimbChain chain, int pathIndex, Quaternion delta)
         {
             Pose[] w = pose.World;
+            int joint = chain.Path[pathIndex];
             int parent = pose.Skeleton.GetParent(joint);
             Quaternion parentRotation = parent < 0 ? pose.Origin.Rotation : w[parent].Rotation;
             Quaternion world = Quaternion.Normalize(delta * w[joint].Rotation);
             pose.Local[joint] = pose.Local[joint].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(parentRotation) * world));
-            int start = Array.IndexOf(chain.Path, joint);
-            UpdatePath(pose, chain, start);
+            UpdatePath(pose, chain, pathIndex);
         }
 
         private static void UpdatePath(SkeletonPose pose, LimbChain chain, int start) =>

@@ -16,7 +16,7 @@ public sealed class BenchCommand : ICommand
     public string Name => "bench";
     public string Summary => "Time the per-frame body solve (ns/frame, bytes allocated/frame)";
     public string Help => """
-        avatargo bench [--json] [--runs N] [--bvh FILE]
+        avatargo bench [--json] [--runs N] [--frames N] [--bvh FILE]
 
         Simulates a real mocap clip (default: the bundled one), calibrates, then times the per-frame
         work on every frame of the motion: the body solver (device poses -> targets) and the full-body
@@ -24,6 +24,7 @@ public sealed class BenchCommand : ICommand
         N runs, with min and max) and bytes allocated per frame on this thread (must be 0), and the
         machine. Run it in Release: dotnet run --project Tools~/AvatarGo.Cli -c Release -- bench
           --runs N   timed runs per case (default 15)
+          --frames N time only the first N frames of the motion (default: all)
           --json     print JSON instead of a table
         """;
 
@@ -33,10 +34,12 @@ public sealed class BenchCommand : ICommand
         bool json = a.Flag("json");
         int runs = a.Int("runs", 15);
         string bvh = a.String("bvh");
+        int frames = a.Int("frames", int.MaxValue);
         a.ThrowOnUnknown(0);
         if (runs < 1) throw new UsageException("--runs must be at least 1");
+        if (frames < 1) throw new UsageException("--frames must be at least 1");
 
-        var fixture = BenchFixture.Create(bvh ?? DemoCommandPaths.BundledClip());
+        var fixture = BenchFixture.Create(bvh ?? DemoCommandPaths.BundledClip(), frames);
         var results = new List<BenchResult>
         {
             Measure("body solver (devices -> targets)", fixture, runs, f => f.SolveTargets()),
@@ -125,7 +128,7 @@ internal sealed class BenchFixture
     public int Frames => _samples.Length;
     public int Joints => _pose.Skeleton.JointCount;
 
-    public static BenchFixture Create(string clipPath)
+    public static BenchFixture Create(string clipPath, int maxFrames = int.MaxValue)
     {
         BvhClip clip = BvhReader.ReadFile(clipPath, new BvhReadOptions { ToMetres = true });
         var simulator = new SessionSimulator(clip, new SimulationOptions { Seed = 1 });
@@ -138,7 +141,7 @@ internal sealed class BenchFixture
         while (reader.ReadFrame(frame))
         {
             if (calibrator.State != CalibrationState.Calibrated) { calibrator.Update(frame.Time, frame.Samples, frame.Events); continue; }
-            samples.Add((DeviceSample[])frame.Samples.Clone());
+            if (samples.Count < maxFrames) samples.Add((DeviceSample[])frame.Samples.Clone());
         }
         if (calibrator.State != CalibrationState.Calibrated) throw new InvalidDataException("calibration did not complete: " + calibrator.LastMessage);
         var f = new BenchFixture

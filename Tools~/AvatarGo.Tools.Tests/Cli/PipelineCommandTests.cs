@@ -22,6 +22,17 @@ public class PipelineCommandTests
     }
 
     [Test]
+    public void BenchWithFewFramesAllocatesNothingPerFrame()
+    {
+        var r = CliRunner.Run("bench", "--frames", "200", "--json", "--runs", "3");
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
+        using var doc = JsonDocument.Parse(r.Stdout);
+        Assert.That(doc.RootElement.GetProperty("frames").GetInt32(), Is.EqualTo(200));
+        foreach (var c in doc.RootElement.GetProperty("cases").EnumerateArray())
+            Assert.That(c.GetProperty("bytes_per_frame").GetDouble(), Is.EqualTo(0.0), c.GetProperty("name").GetString());
+    }
+
+    [Test]
     public void DemoComparesExactAndFixedOffsetsAndWritesTheSolvedAvatar()
     {
         string bvh = Path.Combine(Path.GetTempPath(), "avatargo-demo-test-" + System.Guid.NewGuid().ToString("N") + ".bvh");

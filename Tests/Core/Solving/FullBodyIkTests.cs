@@ -1,0 +1,225 @@
+using System;
+using System.Linq;
+using System.Numerics;
+using NUnit.Framework;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// <see cref="FullBodyIk"/> against real motion: each frame of a mocap clip gives the true world poses; the
+    /// targets are built from them (hips, head, ankles and wrists as goals, true knees and elbows as hints, the
+    /// spine bend as the body solver computes it), the IK poses the same skeleton, and the result is compared with
+    /// the truth joint by joint.
+    /// </summary>
+    public class FullBodyIkTests
+    {
+        internal sealed class Truth
+        {
+            public BvhClip Clip;
+            public HumanoidMap Map;
+            public Pose[] Local, World;
+            public Vector3 RestRootToHead;
+            public Quaternion RestHipsRotation;
+
+            public Truth(string clipName)
+            {
+                Clip = BvhReader.ReadFile(TestData.SharedMocap(clipName), new BvhReadOptions { ToMetres = true });
+                Map = HumanoidNaming.Detect(Clip.Skeleton);
+                Local = new Pose[Clip.Skeleton.JointCount];
+                World = new Pose[Clip.Skeleton.JointCount];
+                var rest = new SkeletonPose(Clip.Skeleton);
+                RestRootToHead = rest.World[Map[HumanBone.Head]].Position - rest.World[Map[HumanBone.Hips]].Position;
+                RestHipsRotation = rest.World[Map[HumanBone.Hips]].Rotation;
+            }
+
+            public int this[HumanBone b] => Map[b];
+
+            /// <summary>Loads frame <paramref name="frame"/>'s truth and fills the targets from it.</summary>
+            public void Targets(int frame, ref BodyTargets t)
+            {
+                Clip.GetWorldPoses(frame, Local, World);
+                Pose hips = World[Map[HumanBone.Hips]], head = World[Map[HumanBone.Head]];
+                t.Hips = hips;
+                t.HipsActive = true;
+                t.Head = head;
+                t.HeadActive = true;
+                // The paper's α: from the rest root-to-head vector turned with the root, to the current one.
+                Vector3 w0 = Vector3.Transform(RestRootToHead, hips.Rotation * Quaternion.Inverse(RestHipsRotation));
+                t.SpineBend = Rotations.FromTo(w0, head.Position - hips.Position);
+                t.LeftFoot = new LimbTarget(World[Map[HumanBone.LeftFoot]], World[Map[HumanBone.LeftLowerLeg]].Position);
+                t.RightFoot = new LimbTarget(World[Map[HumanBone.RightFoot]], World[Map[HumanBone.RightLowerLeg]].Position);
+                t.LeftHand = new LimbTarget(World[Map[HumanBone.LeftHand]], World[Map[HumanBone.LeftLowerArm]].Position);
+                t.RightHand = new LimbTarget(World[Map[HumanBone.RightHand]], World[Map[HumanBone.RightLowerArm]].Position);
+            }
+        }
+
+        private static float Median(float[] values)
+        {
+            var copy = (float[])values.Clone();
+            Array.Sort(copy);
+            return copy[copy.Length / 2];
+        }
+
+        private static float Error(SkeletonPose pose, Truth truth, HumanBone bone) =>
+            Vector3.Distance(pose.World[truth[bone]].Position, truth.World[truth[bone]].Position);
+
+        /// <summary>
+        /// The whole body from true targets, every frame solved from the rest pose. Hips and head are set, the legs
+        /// hang from the exact hips: all of these must be exact to float rounding (1 mm is the bound, 0.1 mm
+        /// what the analytic solve gives). The chest, clavicles and so the shoulders are not given by the targets (six
+        /// devices do not observe them): the spine takes the paper's even bend, so wrists are reached when the arm
+        /// can reach from where the shoulder ends up (reported otherwise), and elbows are off by the shoulder's error.
+        /// The bounds on those are measured values with a margin (2026-11-23, frames solved from rest: mocapbank
+        /// elbow error median 37.6 mm, max 71.5 mm, an unreached hand in 101 of 455 frames, head over 1 mm from its
+        /// target in 27 frames (6 mm worst); mixamo 46.7 mm / 67.9 mm / 45 of 69 / 0 (0.09 mm worst)).
+        /// Rigify is not used: its joints carry per-frame position channels, so its bones change length and no
+        /// rotation-only IK on the rest skeleton can match it (see LimbsFromTrueShouldersMatchTheTruth).
+        /// </summary>
+        [TestCase("mocapbank_30fps.bvh", 45f, 0.25f, 0.07f)]
+        [TestCase("mixamo_fingers_30fps.bvh", 55f, 0.70f, 0.02f)]
+        public void TrueTargetsGiveTheTrueBody(string clipName, float elbowMedianMm, float unreachedShare, float headMissShare)
+        {
+            var truth = new Truth(clipName);
+            var ik = new FullBodyIk(truth.Map);
+            var pose = new SkeletonPose(truth.Clip.Skeleton);
+            var targets = new BodyTargets();
+            int frames = truth.Clip.FrameCount, unreached = 0, headMissed = 0;
+            var elbows = new float[frames];
+            for (int f = 0; f < frames; f++)
+            {
+                truth.Targets(f, ref targets);
+                pose.ResetToRest();
+                IkReport r = ik.Solve(in targets, pose);
+                string at = $"{clipName} frame {f}";
+                Approx.Near(targets.Hips, pose.World[truth[HumanBone.Hips]], 1e-5f, 0.01f, at + " hips");
+                Approx.Near(targets.Head.Rotation, pose.World[truth[HumanBone.Head]].Rotation, 0.01f, at + " head rotation");
+                float head = Error(pose, truth, HumanBone.Head);
+                Assert.That(r.HeadDistanceLeft, Is.EqualTo(head).Within(1e-5f), at + " reported head distance");
+                if (head > 0.001f) headMissed++;
+                Assert.That(head, Is.LessThan(0.01f), at + " head (m)");
+                foreach (HumanBone b in new[] { HumanBone.LeftFoot, HumanBone.RightFoot, HumanBone.LeftLowerLeg, HumanBone.RightLowerLeg })
+                    Assert.That(Error(pose, truth, b), Is.LessThan(1e-4f), $"{at} {b} (m)");
+                Approx.Near(targets.LeftFoot.Goal.Rotation, pose.World[truth[HumanBone.LeftFoot]].Rotation, 0.01f, at + " left foot rotation");
+                // A reached hand is on its goal (within the 1 mm tolerance); an unreached one says so with the true distance.
+                foreach (var (bone, result) in new[] { (HumanBone.LeftHand, r.LeftHand), (HumanBone.RightHand, r.RightHand) })
+                {
+                    float e = Error(pose, truth, bone);
+                    Assert.That(result.DistanceLeft, Is.EqualTo(e).Within(1e-5f), $"{at} {bone} reported distance");
+                    Assert.That(result.Reached, Is.EqualTo(e <= TwoBoneIk.ReachedTolerance), $"{at} {bone} reached flag");
+                }
+                if (!r.LeftHand.Reached || !r.RightHand.Reached) unreached++;
+                Assert.That(r.LeftFoot.Reached && r.RightFoot.Reached, Is.True, at + " feet");
+                elbows[f] = 0.5f * (Error(pose, truth, HumanBone.LeftLowerArm) + Error(pose, truth, HumanBone.RightLowerArm));
+            }
+            TestContext.WriteLine($"{clipName}: head over 1 mm {headMissed}/{frames}, unreached {unreached}, elbow median {Median(elbows) * 1000f} max {elbows.Max() * 1000f}");
+            // The head: within 1 mm in nearly all frames (the rest are poses the even bend plus polishing leaves a
+            // few mm short, never 10 mm: asserted per frame above).
+            Assert.That(headMissed, Is.LessThanOrEqualTo((int)(headMissShare * frames)), "frames with the head over 1 mm from its target");
+            Assert.That(unreached, Is.LessThanOrEqualTo((int)(unreachedShare * frames)), "frames with an unreached hand");
+            Assert.That(Median(elbows) * 1000f, Is.LessThan(elbowMedianMm), "elbow error median (mm)");
+        }
+
+        /// <summary>
+        /// The limbs alone on real motion: the body above each limb is the truth (so the shoulders and hips are the
+        /// true ones), the limb starts from its rest pose, and TwoBoneIk with the true wrist/ankle as goal and the true
+        /// elbow/knee as hint must give back the true limb. The middle joint is determined exactly by the plane of the
+        /// hint and the two bone lengths, so 0.1 mm (float rounding plus the solver's 0.01 mm stretch margin for the
+        /// nearly straight legs) is the bound. Rigify is included: the limb's lengths are taken from the current pose.
+        /// </summary>
+        [TestCase("mocapbank_30fps.bvh")]
+        [TestCase("mixamo_fingers_30fps.bvh")]
+        [TestCase("rigify_6channel_24fps.bvh")]
+        public void LimbsFromTrueShouldersMatchTheTruth(string clipName)
+        {
+            var truth = new Truth(clipName);
+            var pose = new SkeletonPose(truth.Clip.Skeleton);
+            Skeleton s = truth.Clip.Skeleton;
+            var limbs = new[]
+            {
+                (HumanBone.LeftUpperLeg, HumanBone.LeftLowerLeg, HumanBone.LeftFoot),
+                (HumanBone.RightUpperLeg, HumanBone.RightLowerLeg, HumanBone.RightFoot),
+                (HumanBone.LeftUpperArm, HumanBone.LeftLowerArm, HumanBone.LeftHand),
+                (HumanBone.RightUpperArm, HumanBone.RightLowerArm, HumanBone.RightHand),
+            };
+            var chains = new LimbChain[limbs.Length];
+            for (int i = 0; i < limbs.Length; i++) chains[i] = new LimbChain(s, truth[limbs[i].Item1], truth[limbs[i].Item2], truth[limbs[i].Item3]);
+            var unused = new BodyTargets();
+            int step = Math.Max(1, truth.Clip.FrameCount / 400);
+            for (int f = 0; f < truth.Clip.FrameCount; f += step)
+            {
+                truth.Targets(f, ref unused);
+                Array.Copy(truth.Local, pose.Local, pose.Local.Length);
+                foreach (LimbChain c in chains)
+                    foreach (int j in c.Path) pose.Local[j] = pose.Local[j].WithRotation(s.GetRestLocal(j).Rotation);
+                pose.UpdateWorld();
+                for (int i = 0; i < limbs.Length; i++)
+                {
+                    var (root, middle, end) = limbs[i];
+                    LimbResult r = TwoBoneIk.Solve(pose, chains[i], truth.World[truth[end]], truth.World[truth[middle]].Position);
+                    string at = $"{clipName} frame {f}";
+                    Assert.That(r.Reached, Is.True, $"{at} {end}");
+                    Approx.Near(truth.World[truth[end]], pose.World[truth[end]], 1e-4f, 0.01f, $"{at} {end}");
+                    Approx.Near(truth.World[truth[middle]].Position, pose.World[truth[middle]].Position, 1e-4f, $"{at} {middle}");
+                    Approx.Near(truth.World[truth[root]].Position, pose.World[truth[root]].Position, 1e-6f, $"{at} {root}");
+                }
+            }
+        }
+
+        [Test]
+        public void InactivePartsKeepTheirPreviousPose()
+        {
+            var truth = new Truth("mocapbank_30fps.bvh");
+            var ik = new FullBodyIk(truth.Map);
+            var pose = new SkeletonPose(truth.Clip.Skeleton);
+            var targets = new BodyTargets();
+            truth.Targets(10, ref targets);
+            ik.Solve(in targets, pose);
+            var before = (Pose[])pose.Local.Clone();
+            truth.Targets(200, ref targets);
+            targets.HipsActive = false;
+            targets.HeadActive = false;
+            targets.LeftHand.IsActive = false;
+            targets.RightFoot.IsActive = false;
+            IkReport r = ik.Solve(in targets, pose);
+            Assert.That(pose.Local[truth[HumanBone.Hips]], Is.EqualTo(before[truth[HumanBone.Hips]]), "hips");
+            foreach (HumanBone b in new[] { HumanBone.Spine, HumanBone.Chest, HumanBone.Neck, HumanBone.Head, HumanBone.LeftUpperArm, HumanBone.LeftLowerArm, HumanBone.LeftHand, HumanBone.RightUpperLeg, HumanBone.RightLowerLeg, HumanBone.RightFoot })
+                if (truth.Map.Has(b)) Assert.That(pose.Local[truth[b]], Is.EqualTo(before[truth[b]]), b.ToString());
+            // The active limbs still follow their goals from where the body was left.
+            Assert.That(r.LeftFoot.Reached, Is.True);
+            Approx.Near(targets.LeftFoot.Goal.Position, pose.World[truth[HumanBone.LeftFoot]].Position, 0.001f, "left foot");
+        }
+
+        private static void SolveAll(FullBodyIk ik, BodyTargets[] frames, SkeletonPose pose, int passes)
+        {
+            for (int pass = 0; pass < passes; pass++)
+                for (int f = 0; f < frames.Length; f++) ik.Solve(in frames[f], pose);
+        }
+
+        [Test]
+        public void SolveAllocatesNothing()
+        {
+            var truth = new Truth("mocapbank_30fps.bvh");
+            var ik = new FullBodyIk(truth.Map);
+            var pose = new SkeletonPose(truth.Clip.Skeleton);
+            var frames = new BodyTargets[truth.Clip.FrameCount];
+            for (int f = 0; f < frames.Length; f++) truth.Targets(f, ref frames[f]);
+            for (int f = 0; f < frames.Length; f++) ik.Solve(in frames[f], pose);
+            // Warm up long enough for .NET's tiered compilation to settle: it starts counting calls only after
+            // 100 ms without new compilations, and the thread whose call reaches the count queues the optimised
+            // recompilation, a one-off 24-byte allocation that is the runtime's, not the solver's.
+            var warm = System.Diagnostics.Stopwatch.StartNew();
+            do { SolveAll(ik, frames, pose, 2); System.Threading.Thread.Sleep(5); } while (warm.ElapsedMilliseconds < 600);
+            // Measured in windows inside a loop, each window five passes over the clip. (A single window in
+            // straight-line code right before the assertion reads 24 bytes more even though every one of its Solve
+            // calls measured alone reads 0: the runtime's, not the solver's.)
+            var bytes = new long[4];
+            for (int k = 0; k < bytes.Length; k++)
+            {
+                long t0 = GC.GetAllocatedBytesForCurrentThread();
+                SolveAll(ik, frames, pose, 5);
+                bytes[k] = GC.GetAllocatedBytesForCurrentThread() - t0;
+            }
+            Assert.That(bytes, Is.EqualTo(new long[bytes.Length]), "bytes allocated per window of 5 x 455 solves");
+        }
+    }
+}
