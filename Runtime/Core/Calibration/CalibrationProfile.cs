@@ -98,7 +98,7 @@ namespace AvatarGo.Core
             var p = new CalibrationProfile(this) { AvatarScale = scale };
             float ratio = scale / AvatarScale;
             Vector3 origin = Placement.Position;
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
                 Pose joint = _jointAtCalibration[(int)role];
                 var moved = new Pose(origin + (joint.Position - origin) * ratio, joint.Rotation);
@@ -115,7 +115,7 @@ namespace AvatarGo.Core
         public bool MatchesDevices(System.Collections.Generic.IReadOnlyList<DeviceInfo> devices)
         {
             if (devices == null) return false;
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
                 string serial = _serials[(int)role];
                 bool found = false;
@@ -130,7 +130,7 @@ namespace AvatarGo.Core
         internal CalibrationProfile WithDeviceIds(System.Collections.Generic.IReadOnlyList<DeviceInfo> devices, int[] deviceIndexByRole)
         {
             var p = new CalibrationProfile(this);
-            foreach (DeviceRole role in DeviceMountings.Roles) p.SetDevice(role, devices[deviceIndexByRole[(int)role]]);
+            foreach (DeviceRole role in BodyRoles.All) p.SetDevice(role, devices[deviceIndexByRole[(int)role]]);
             return p;
         }
 
@@ -150,7 +150,7 @@ namespace AvatarGo.Core
         public CalibrationProfile WithFixedOffsets()
         {
             var p = new CalibrationProfile(this) { Mode = OffsetMode.Fixed };
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
                 Vector3 position = role == DeviceRole.Head ? FixedHeadOffset
                     : role == DeviceRole.LeftHand || role == DeviceRole.RightHand ? FixedWristOffset

@@ -32,7 +32,7 @@ namespace AvatarGo.Core
             w.Name("placement"); WritePose(w, profile.Placement);
             w.Name("rootToHead").Values(profile.RootToHead.X, profile.RootToHead.Y, profile.RootToHead.Z);
             w.Name("roles").BeginObject();
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
                 w.Name(RoleKey(role)).BeginObject();
                 w.Name("deviceId").Value(profile.DeviceId(role));
@@ -68,7 +68,7 @@ namespace AvatarGo.Core
             if (mode != "exact" && mode != "fixed") throw new FormatException($"'mode' must be exact or fixed, not '{mode}'.");
             JsonNode roles = root["roles"];
             if (roles == null || roles.Kind != JsonKind.Object) throw new FormatException("'roles' must be an object.");
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
                 JsonNode r = roles[RoleKey(role)] ?? throw new FormatException($"'roles' has no '{RoleKey(role)}'.");
                 double id = r.GetNumber("deviceId");

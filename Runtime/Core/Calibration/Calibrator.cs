@@ -87,7 +87,7 @@ namespace AvatarGo.Core
             if (profile == null) throw new ArgumentNullException(nameof(profile));
             if (!profile.MatchesDevices(_devices)) return false;
             ResetRoles();
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
                 for (int d = 0; d < _devices.Length; d++)
                     if (_devices[d].Serial == profile.Serial(role)) _deviceByRole[(int)role] = d;
             Skeleton scaled = _avatar.Skeleton.Scaled(profile.AvatarScale);
@@ -279,7 +279,7 @@ namespace AvatarGo.Core
             _deviceByRole[(int)DeviceRole.Pelvis] = pelvis;
             _deviceByRole[(int)DeviceRole.LeftFoot] = footA;
             _deviceByRole[(int)DeviceRole.RightFoot] = footB;
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
                 DeviceRole runtime = _devices[_deviceByRole[(int)role]].RuntimeRole;
                 if (runtime != DeviceRole.None && runtime != role)
@@ -317,7 +317,7 @@ namespace AvatarGo.Core
             TPoser.Apply(ScaledAvatar, AvatarPose, placement);
 
             Profile = new CalibrationProfile { AvatarScale = scale, WearerEyeHeight = eyeHeight, AvatarEyeHeight = avatarEye, FloorHeight = floor, Placement = placement };
-            foreach (DeviceRole role in DeviceMountings.Roles) Profile.SetDevice(role, _devices[_deviceByRole[(int)role]]);
+            foreach (DeviceRole role in BodyRoles.All) Profile.SetDevice(role, _devices[_deviceByRole[(int)role]]);
             State = CalibrationState.WalkIn;
             LastError = CalibrationError.None;
             LastMessage = "Walk into the avatar, match its pose, and press a trigger again.";
@@ -329,16 +329,16 @@ namespace AvatarGo.Core
         private bool ComputeOffsets(double now)
         {
             var device = new Pose[7];
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
                 int d = _deviceByRole[(int)role];
                 if (!TryAverage(d, now, out device[(int)role], out bool still, out int fraction) || fraction < 80)
                     return Fail(CalibrationError.DeviceNotTracked, _devices[d].ToString());
                 if (!still) return Fail(CalibrationError.DevicesMoving, _devices[d].ToString());
             }
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
-                Pose joint = AvatarPose.World[ScaledAvatar[VirtualDeviceRig.JointOf(role)]];
+                Pose joint = AvatarPose.World[ScaledAvatar[BodyRoles.JointOf(role)]];
                 Profile.SetOffsets(role, device[(int)role], joint);
             }
             Profile.RootToHead = device[(int)DeviceRole.Head].Position - device[(int)DeviceRole.Pelvis].Position;

@@ -21,12 +21,6 @@ namespace AvatarGo.Core
     {
         private readonly Pose[] _byRole = new Pose[7];
 
-        /// <summary>The six roles, in the order device arrays use.</summary>
-        public static readonly DeviceRole[] Roles =
-        {
-            DeviceRole.Head, DeviceRole.LeftHand, DeviceRole.RightHand, DeviceRole.Pelvis, DeviceRole.LeftFoot, DeviceRole.RightFoot,
-        };
-
         /// <summary>The mounting of a role's device, in the T-pose body frame relative to its joint.</summary>
         public Pose this[DeviceRole role]
         {
@@ -56,7 +50,7 @@ namespace AvatarGo.Core
         {
             if (rng == null) throw new ArgumentNullException(nameof(rng));
             DeviceMountings m = Default();
-            foreach (DeviceRole role in Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
                 bool hmd = role == DeviceRole.Head;
                 float range = hmd ? 0.003f : 0.02f;

@@ -10,8 +10,8 @@ namespace AvatarGo.Core
     /// </summary>
     public sealed class VirtualDeviceRig
     {
-        private readonly int[] _joints = new int[DeviceMountings.Roles.Length];
-        private readonly Pose[] _deviceInJoint = new Pose[DeviceMountings.Roles.Length];
+        private readonly int[] _joints = new int[BodyRoles.All.Length];
+        private readonly Pose[] _deviceInJoint = new Pose[BodyRoles.All.Length];
 
         /// <summary>
         /// Builds the rig for the wearer's skeleton: the mountings (given in the T-pose body frame) are converted
@@ -23,10 +23,10 @@ namespace AvatarGo.Core
             Mountings = mountings ?? throw new ArgumentNullException(nameof(mountings));
             var tpose = new SkeletonPose(wearer.Skeleton);
             TPoser.Apply(wearer, tpose, Pose.Identity);
-            for (int i = 0; i < DeviceMountings.Roles.Length; i++)
+            for (int i = 0; i < BodyRoles.All.Length; i++)
             {
-                DeviceRole role = DeviceMountings.Roles[i];
-                HumanBone bone = JointOf(role);
+                DeviceRole role = BodyRoles.All[i];
+                HumanBone bone = BodyRoles.JointOf(role);
                 _joints[i] = wearer[bone];
                 Pose joint = tpose.World[_joints[i]];
                 Pose mount = mountings[role];
@@ -42,27 +42,12 @@ namespace AvatarGo.Core
         /// <summary>The mountings used.</summary>
         public DeviceMountings Mountings { get; }
 
-        /// <summary>The humanoid joint a role's device is attached to.</summary>
-        public static HumanBone JointOf(DeviceRole role)
-        {
-            switch (role)
-            {
-                case DeviceRole.Head: return HumanBone.Head;
-                case DeviceRole.LeftHand: return HumanBone.LeftHand;
-                case DeviceRole.RightHand: return HumanBone.RightHand;
-                case DeviceRole.Pelvis: return HumanBone.Hips;
-                case DeviceRole.LeftFoot: return HumanBone.LeftFoot;
-                case DeviceRole.RightFoot: return HumanBone.RightFoot;
-                default: throw new ArgumentOutOfRangeException(nameof(role), role, "No joint for this role.");
-            }
-        }
-
         /// <summary>The true pose of a role's device in its joint's frame (what exact calibration should recover).</summary>
         public Pose DeviceInJoint(DeviceRole role) => _deviceInJoint[IndexOf(role)];
 
         /// <summary>
         /// Writes the device poses for the wearer's world joint poses <paramref name="world"/> into
-        /// <paramref name="devices"/>, in <see cref="DeviceMountings.Roles"/> order. Allocation-free.
+        /// <paramref name="devices"/>, in <see cref="BodyRoles.All"/> order. Allocation-free.
         /// </summary>
         public void Compute(ReadOnlySpan<Pose> world, Span<Pose> devices)
         {
@@ -94,7 +79,7 @@ namespace AvatarGo.Core
 
         private static int IndexOf(DeviceRole role)
         {
-            int i = Array.IndexOf(DeviceMountings.Roles, role);
+            int i = Array.IndexOf(BodyRoles.All, role);
             if (i < 0) throw new ArgumentOutOfRangeException(nameof(role));
             return i;
         }

@@ -36,7 +36,7 @@ namespace AvatarGo.Core
             if (devices == null) throw new ArgumentNullException(nameof(devices));
             if (avatar == null) throw new ArgumentNullException(nameof(avatar));
             if (calibrationPose == null) throw new ArgumentNullException(nameof(calibrationPose));
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
                 _deviceIndex[(int)role] = -1;
                 for (int i = 0; i < devices.Count; i++)

@@ -34,7 +34,7 @@ namespace AvatarGo.Core.Tests
                 CalibrationProfile q = CalibrationProfileStore.Load(path);
                 Assert.That(q.AvatarScale, Is.EqualTo(p.AvatarScale));
                 Assert.That(q.RootToHead, Is.EqualTo(p.RootToHead));
-                foreach (DeviceRole role in DeviceMountings.Roles)
+                foreach (DeviceRole role in BodyRoles.All)
                 {
                     Assert.That(q.Serial(role), Is.EqualTo(p.Serial(role)));
                     Assert.That(q.DeviceId(role), Is.EqualTo(p.DeviceId(role)));
@@ -92,7 +92,7 @@ namespace AvatarGo.Core.Tests
             CalibrationProfile p = Calibrated(out _).Profile;
             CalibrationProfile bigger = p.WithAvatarScale(p.AvatarScale * 1.1f);
             Vector3 origin = p.Placement.Position;
-            foreach (DeviceRole role in DeviceMountings.Roles)
+            foreach (DeviceRole role in BodyRoles.All)
             {
                 // The joint at calibration moved away from the floor spot by exactly the ratio; device unchanged.
                 Vector3 expected = origin + (p.JointAtCalibration(role).Position - origin) * 1.1f;

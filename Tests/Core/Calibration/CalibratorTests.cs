@@ -49,7 +49,7 @@ namespace AvatarGo.Core.Tests
                 wearer.StandInTPose(calibrator.Profile.Placement);
                 wearer.HoldAndPress(calibrator, ref t, 0.002f, 0.2f);
                 Assert.That(calibrator.State, Is.EqualTo(CalibrationState.Calibrated), calibrator.LastMessage);
-                foreach (DeviceRole role in DeviceMountings.Roles)
+                foreach (DeviceRole role in BodyRoles.All)
                 {
                     Pose truth = wearer.Rig.DeviceInJoint(role).Inverse();
                     Pose got = calibrator.Profile.JointInDevice(role);

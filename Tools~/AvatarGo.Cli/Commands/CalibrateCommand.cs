@@ -70,7 +70,7 @@ public sealed class CalibrateCommand : ICommand
             {
                 CalibrationProfile p = calibrator.Profile;
                 stdout.WriteLine(string.Create(inv, $"scale: {p.AvatarScale:0.0000} (wearer eye height {p.WearerEyeHeight:0.000} m, avatar {p.AvatarEyeHeight:0.000} m, floor {p.FloorHeight:0.###} m)"));
-                foreach (DeviceRole role in DeviceMountings.Roles)
+                foreach (DeviceRole role in BodyRoles.All)
                 {
                     DeviceInfo d = reader.Header.Devices[calibrator.DeviceIndexOf(role)];
                     string line = $"  {role,-10} device {d.Id} ({d.Class}, {d.Serial})";
