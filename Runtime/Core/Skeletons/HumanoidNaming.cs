@@ -9,7 +9,8 @@ namespace AvatarGo.Core
     /// (<c>mixamorig:LeftUpLeg</c>, any <c>prefix:</c>), Ubisoft/LaFAN (<c>LeftUpLeg</c>, <c>LeftLeg</c>,
     /// <c>LeftToe</c>, <c>Spine1</c>), CMU/MocapBank (<c>Chest</c>, <c>LeftCollar</c>, <c>LeftShoulder</c> = upper
     /// arm, <c>LeftElbow</c>, <c>LeftWrist</c>, <c>LeftHip</c>, <c>LeftKnee</c>, <c>LeftAnkle</c>), Rigify
-    /// (<c>pelvis</c>, <c>spine.001</c>, <c>upper_arm.L</c>, <c>thigh.L</c>, <c>shin.L</c>, <c>f_index.01.L</c>) and
+    /// (<c>pelvis</c>, <c>spine.001</c>, <c>upper_arm.L</c>, <c>thigh.L</c>, <c>shin.L</c>, <c>f_index.01.L</c>), Unreal
+    /// (<c>thigh_l</c>, <c>calf_l</c>, <c>upperarm_l</c>, <c>neck_01</c>, <c>index_01_l</c>) and
     /// Unity-style names (<c>LeftUpperArm</c>, <c>LeftLowerLeg</c>). Explicit overrides win.
     /// </summary>
     /// <remarks>
@@ -118,7 +119,7 @@ namespace AvatarGo.Core
             }
 
             // Neck and head.
-            int neck = Find(skeleton, cores, sides, Side.None, hips, "neck", "neck1");
+            int neck = Find(skeleton, cores, sides, Side.None, hips, "neck", "neck1", "neck01");
             int head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "head");
             if (head < 0) head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "face");
             if (head < 0 && neck >= 0) head = EndSiteOf(skeleton, neck);

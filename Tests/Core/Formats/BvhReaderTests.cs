@@ -70,10 +70,13 @@ namespace AvatarGo.Core.Tests
         [TestCase("Hips", "LeftUpLeg", "LeftLeg", "LeftFoot", "LeftToe", "Spine", "Spine1", "Spine2", "Neck", "Head", "LeftShoulder", "LeftArm", "LeftForeArm", "LeftHand")]
         [TestCase("Hips", "LeftUpperLeg", "LeftLowerLeg", "LeftFoot", "LeftToes", "Spine", "Chest", "UpperChest", "Neck", "Head", "LeftShoulder", "LeftUpperArm", "LeftLowerArm", "LeftHand")]
         [TestCase("pelvis", "thigh.L", "shin.L", "foot.L", "toe.L", "spine", "spine.001", "spine.002", "neck", "head", "shoulder.L", "upper_arm.L", "forearm.L", "hand.L")]
+        [TestCase("pelvis", "thigh_l", "calf_l", "foot_l", "ball_l", "spine_01", "spine_02", "spine_03", "neck_01", "head", "clavicle_l", "upperarm_l", "lowerarm_l", "hand_l")]
         public void SyntheticSkeletonsInEachConvention(string hips, string upLeg, string leg, string foot, string toe, string spine, string chest, string upperChest,
             string neck, string head, string clavicle, string upperArm, string foreArm, string hand)
         {
-            string Right(string n) => n.StartsWith("Left") ? "Right" + n.Substring(4) : n.EndsWith(".L") ? n.Substring(0, n.Length - 2) + ".R" : n;
+            string Right(string n) => n.StartsWith("Left") ? "Right" + n.Substring(4)
+                : n.EndsWith(".L") ? n.Substring(0, n.Length - 2) + ".R"
+                : n.EndsWith("_l") ? n.Substring(0, n.Length - 2) + "_r" : n;
             var names = new List<string>();
             var parents = new List<int>();
             int Add(string n, int p) { names.Add(n); parents.Add(p); return names.Count - 1; }
