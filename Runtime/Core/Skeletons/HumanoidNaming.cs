@@ -130,7 +130,8 @@ namespace AvatarGo.Core
 
             // Spine chain: unsided joints strictly between the hips and the neck (or the arms' attachment).
             int top = neck >= 0 ? skeleton.GetParent(neck)
-                : bones.TryGetValue(HumanBone.LeftUpperArm, out int la) ? skeleton.GetParent(la) : -1;
+                : bones.TryGetValue(HumanBone.LeftUpperArm, out int la) ? skeleton.GetParent(la)
+                : head >= 0 ? skeleton.GetParent(head) : -1;
             if (bones.TryGetValue(HumanBone.LeftShoulder, out int ls)) top = CommonAncestor(skeleton, top, skeleton.GetParent(ls));
             var chain = new List<int>();
             for (int j = top; j >= 0 && j != hips; j = skeleton.GetParent(j))
