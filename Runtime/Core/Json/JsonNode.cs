@@ -200,7 +200,7 @@ namespace AvatarGo.Core
                     if (AtEnd) throw Error("unterminated string");
                     char c = _s[_i++];
                     if (c == '"') return sb.ToString();
-                    if (c < ' ') throw Error("control character in a string");
+                    if (c < ' ') { _i--; throw Error("control character in a string (escape it)"); }
                     if (c != '\\') { sb.Append(c); continue; }
                     if (AtEnd) throw Error("unterminated escape");
                     char e = _s[_i++];
@@ -215,28 +215,76 @@ namespace AvatarGo.Core
                         case 'r': sb.Append('\r'); break;
                         case 't': sb.Append('\t'); break;
                         case 'u':
-                            if (_i + 4 > _s.Length || !int.TryParse(_s.Substring(_i, 4), NumberStyles.HexNumber, CultureInfo.InvariantCulture, out int code))
-                                throw Error("bad \\u escape");
-                            sb.Append((char)code);
-                            _i += 4;
+                            sb.Append((char)Hex4());
                             break;
-                        default: throw Error($"bad escape '\\{e}'");
+                        default: _i -= 2; throw Error($"bad escape '\\{e}'");
                     }
                 }
             }
 
+            // RFC 8259 grammar, strictly: -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)? ("01", "1.", ".5", "+1" are errors).
             private JsonNode NumberLiteral()
             {
                 int start = _i;
                 if (_s[_i] == '-') _i++;
-                while (_i < _s.Length && "0123456789.eE+-".IndexOf(_s[_i]) >= 0) _i++;
+                if (AtEnd || !IsDigit(_s[_i])) throw NumberError(start);
+                if (_s[_i] == '0')
+                {
+                    _i++;
+                    if (!AtEnd && IsDigit(_s[_i])) throw NumberError(start);
+                }
+                else Digits();
+                if (!AtEnd && _s[_i] == '.')
+                {
+                    _i++;
+                    if (AtEnd || !IsDigit(_s[_i])) throw NumberError(start);
+                    Digits();
+                }
+                if (!AtEnd && (_s[_i] == 'e' || _s[_i] == 'E'))
+                {
+                    _i++;
+                    if (!AtEnd && (_s[_i] == '+' || _s[_i] == '-')) _i++;
+                    if (AtEnd || !IsDigit(_s[_i])) throw NumberError(start);
+                    Digits();
+                }
                 string text = _s.Substring(start, _i - start);
                 if (!double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double v) || double.IsInfinity(v))
                 {
                     _i = start;
-                    throw Error($"'{text}' is not a number");
+                    throw Error($"'{text}' is out of range");
                 }
                 return new JsonNode(JsonKind.Number, n: v);
+            }
+
+            private void Digits()
+            {
+                while (!AtEnd && IsDigit(_s[_i])) _i++;
+            }
+
+            private static bool IsDigit(char c) => c >= '0' && c <= '9';
+
+            private FormatException NumberError(int start)
+            {
+                int end = _i;
+                while (end < _s.Length && "0123456789.eE+-".IndexOf(_s[end]) >= 0) end++;
+                string text = _s.Substring(start, end - start);
+                _i = start;
+                return Error($"'{text}' is not a JSON number");
+            }
+
+            private int Hex4()
+            {
+                if (_i + 4 > _s.Length) throw Error("bad \\u escape");
+                int code = 0;
+                for (int k = 0; k < 4; k++)
+                {
+                    char h = _s[_i + k];
+                    int d = h >= '0' && h <= '9' ? h - '0' : h >= 'a' && h <= 'f' ? h - 'a' + 10 : h >= 'A' && h <= 'F' ? h - 'A' + 10 : -1;
+                    if (d < 0) throw Error("bad \\u escape");
+                    code = code * 16 + d;
+                }
+                _i += 4;
+                return code;
             }
         }
     }

@@ -42,16 +42,20 @@ namespace AvatarGo.Core
         }
 
         /// <summary>Writes a number value (round-trip precision).</summary>
+        /// <exception cref="System.ArgumentOutOfRangeException">The value is NaN or infinite, which JSON cannot represent.</exception>
         public JsonWriter Value(double value)
         {
+            CheckFinite(value);
             Separator();
             _sb.Append(value.ToString("R", CultureInfo.InvariantCulture));
             return this;
         }
 
         /// <summary>Writes a float value (round-trip precision for floats).</summary>
+        /// <exception cref="System.ArgumentOutOfRangeException">The value is NaN or infinite, which JSON cannot represent.</exception>
         public JsonWriter Value(float value)
         {
+            CheckFinite(value);
             Separator();
             _sb.Append(value.ToString("R", CultureInfo.InvariantCulture));
             return this;
@@ -66,8 +70,11 @@ namespace AvatarGo.Core
         }
 
         /// <summary>Writes an array of floats on one line.</summary>
+        /// <exception cref="System.ArgumentOutOfRangeException">A value is NaN or infinite, which JSON cannot represent.</exception>
         public JsonWriter Values(params float[] values)
         {
+            if (values == null) throw new System.ArgumentNullException(nameof(values));
+            foreach (float v in values) CheckFinite(v);
             Separator();
             _sb.Append('[');
             for (int i = 0; i < values.Length; i++)
@@ -81,6 +88,20 @@ namespace AvatarGo.Core
 
         /// <summary>The text written so far.</summary>
         public override string ToString() => _sb.ToString();
+
+        private static void CheckFinite(double value)
+        {
+            if (double.IsNaN(value) || double.IsInfinity(value))
+                throw new System.ArgumentOutOfRangeException(nameof(value), value, "JSON has no NaN or infinity; write null or leave the member out.");
+        }
+
+        /// <summary>Writes null.</summary>
+        public JsonWriter Null()
+        {
+            Separator();
+            _sb.Append("null");
+            return this;
+        }
 
         private JsonWriter Open(char c)
         {
