@@ -16,17 +16,18 @@ public sealed class FingersCommand : ICommand
     public string Name => "fingers";
     public string Summary => "Finger IK on each controller profile: penetration, fingertip gaps, cost, frame-rate independence";
     public string Help => """
-        avatargo fingers [--profile NAME] [--hand BVH] [--json]
+        avatargo fingers [--profile NAME] [--hand reference|BVH] [--json]
 
-        Holds each controller profile (Runtime/ControllerProfiles/*.json) in both hands of an avatar
-        hand (default: the Mixamo hand of the shared clip mixamo_fingers_30fps.bvh, when present, else
-        --hand) while the controller wobbles in the hand for two seconds (2 mm, 3 deg), solving at 72,
+        Holds each controller profile (Runtime/ControllerProfiles/*.json) in both hands of each avatar
+        hand (default: the reference hand built in code, ReferenceHandRig, and the Mixamo hand of the
+        shared clip mixamo_fingers_30fps.bvh when ../shared is present) while the controller wobbles in
+        the hand for two seconds (2 mm, 3 deg), solving at 72,
         90 and 144 Hz, and reports per profile and hand: the deepest penetration of a finger into the
         surface (mm), the median and largest fingertip gap (mm), iterations and microseconds per frame
         for both hands, bytes allocated per frame, and the largest difference in the final joint
         parameters t between the three frame rates.
           --profile NAME   only this profile (file name without .json)
-          --hand BVH       a BVH rig with finger bones to use as the hand
+          --hand WHICH     only this hand: "reference", or a BVH file of a rig with finger bones
           --json           print JSON
         """;
 
@@ -42,26 +43,34 @@ public sealed class FingersCommand : ICommand
         var profiles = Directory.GetFiles(profilesDir, "*.json").OrderBy(f => f, StringComparer.Ordinal)
             .Select(f => ControllerProfile.Parse(File.ReadAllText(f))).Where(p => only == null || p.Name == only).ToList();
         if (profiles.Count == 0) throw new UsageException($"no controller profile named '{only}' in {profilesDir}");
-        handFile ??= FindSharedHand() ?? throw new UsageException("no hand rig found: pass --hand FILE (a BVH with finger bones)");
-        HumanoidMap rig = HumanoidNaming.Detect(BvhReader.ReadFile(handFile, new BvhReadOptions { ToMetres = true }).Skeleton);
+        var rigs = new List<(string Name, HumanoidMap Map)>();
+        if (handFile == null || handFile == "reference") rigs.Add(("reference", ReferenceHandRig.Build()));
+        if (handFile == null) handFile = FindSharedHand();
+        if (handFile != null && handFile != "reference")
+            rigs.Add((Path.GetFileName(handFile), HumanoidNaming.Detect(BvhReader.ReadFile(handFile, new BvhReadOptions { ToMetres = true }).Skeleton)));
 
         // Warm up for a second so that .NET's tiered JIT has optimised the solver before anything is timed.
         var warm = Stopwatch.StartNew();
-        while (warm.ElapsedMilliseconds < 1000) Measure(rig, true, profiles[0]);
+        while (warm.ElapsedMilliseconds < 1000) Measure(rigs[0].Map, true, profiles[0]);
         var rows = new List<Dictionary<string, object>>();
-        foreach (ControllerProfile profile in profiles)
-            foreach (bool left in new[] { true, false })
-                rows.Add(Measure(rig, left, profile));
+        foreach (var rig in rigs)
+            foreach (ControllerProfile profile in profiles)
+                foreach (bool left in new[] { true, false })
+                {
+                    var row = new Dictionary<string, object> { ["rig"] = rig.Name };
+                    foreach (var pair in Measure(rig.Map, left, profile)) row[pair.Key] = pair.Value;
+                    rows.Add(row);
+                }
         if (json)
         {
-            stdout.WriteLine(JsonSerializer.Serialize(new { hand = Path.GetFileName(handFile), machine = BenchCommand.Machine(), results = rows }, new JsonSerializerOptions { WriteIndented = true }));
+            stdout.WriteLine(JsonSerializer.Serialize(new { machine = BenchCommand.Machine(), results = rows }, new JsonSerializerOptions { WriteIndented = true }));
             return 0;
         }
-        stdout.WriteLine($"hand rig: {Path.GetFileName(handFile)}; controller wobbling 2 mm / 3 deg for 2 s");
-        stdout.WriteLine("profile       hand   penetration  tip gap median/max   iterations  us/frame  bytes/frame  max dt(72,90,144 Hz)");
+        stdout.WriteLine("controller wobbling 2 mm / 3 deg in the hand for 2 s; fingertip gaps of the four fingers, thumb excluded (it seeks the thumb rest)");
+        stdout.WriteLine("rig                        profile       hand   penetration  tip gap median/max   iterations  us/frame  bytes/frame  max dt(72,90,144 Hz)");
         foreach (var r in rows)
             stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"{r["profile"],-13} {r["hand"],-6} {r["max_penetration_mm"],8:0.00} mm   {r["tip_gap_median_mm"],6:0.0} / {r["tip_gap_max_mm"],-6:0.0} mm {r["iterations_per_frame"],9:0.0} {r["us_per_frame"],9:0.0} {r["bytes_per_frame"],10:0} {r["max_t_difference"],12:0.000}"));
+                $"{r["rig"],-26} {r["profile"],-13} {r["hand"],-6} {r["max_penetration_mm"],8:0.00} mm   {r["tip_gap_median_mm"],6:0.0} / {r["tip_gap_max_mm"],-6:0.0} mm {r["iterations_per_frame"],9:0.0} {r["us_per_frame"],9:0.0} {r["bytes_per_frame"],10:0} {r["max_t_difference"],12:0.000}"));
         return 0;
     }
 

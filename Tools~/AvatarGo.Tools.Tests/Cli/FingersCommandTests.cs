@@ -8,8 +8,7 @@ public class FingersCommandTests
     [Test]
     public void ReportsEveryProfileAndHandWithoutAllocatingPerFrame()
     {
-        Paths.SharedMocap("mixamo_fingers_30fps.bvh");
-        var r = CliRunner.Run("fingers", "--json");
+        var r = CliRunner.Run("fingers", "--json", "--hand", "reference");
         Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
         using var doc = JsonDocument.Parse(r.Stdout);
         int rows = 0;
@@ -26,5 +25,23 @@ public class FingersCommandTests
             Assert.That(row.GetProperty("max_penetration_mm").GetDouble(), Is.LessThanOrEqualTo(1.0), what);
         }
         Assert.That(rows, Is.EqualTo(6), "three profiles, two hands");
+    }
+
+    [Test]
+    public void ByDefaultMeasuresTheReferenceHandAndTheMixamoHand()
+    {
+        Paths.SharedMocap("mixamo_fingers_30fps.bvh");
+        var r = CliRunner.Run("fingers", "--json", "--profile", "vive-wand");
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
+        using var doc = JsonDocument.Parse(r.Stdout);
+        var rigs = new System.Collections.Generic.List<string>();
+        foreach (var row in doc.RootElement.GetProperty("results").EnumerateArray())
+        {
+            rigs.Add(row.GetProperty("rig").GetString());
+            string what = row.GetProperty("rig").GetString() + " " + row.GetProperty("hand").GetString();
+            Assert.That(row.GetProperty("max_penetration_mm").GetDouble(), Is.LessThanOrEqualTo(1.0), what);
+            Assert.That(row.GetProperty("tip_gap_median_mm").GetDouble(), Is.LessThanOrEqualTo(3.0), what);
+        }
+        Assert.That(rigs, Is.EqualTo(new[] { "reference", "reference", "mixamo_fingers_30fps.bvh", "mixamo_fingers_30fps.bvh" }));
     }
 }

@@ -2,16 +2,17 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 
-namespace AvatarGo.Core.Tests
+namespace AvatarGo.Core
 {
     /// <summary>
-    /// Builds a hand rig in code: forearm, hand, five fingers of three joints plus an end site each, with adult hand
+    /// A humanoid rig of two forearms and hands built in code, for tests, tools and previews when no avatar's hand is
+    /// available: forearm, hand, five fingers of three joints plus an end site each, with adult hand
     /// proportions (wrist to middle knuckle 9.5 cm at scale 1; phalanx lengths typical of an adult
     /// hand, rounded to 1 mm). The geometry is fixed; what varies is the rig's convention: the local axis each bone points along,
     /// a twist of every bone about that axis, and the orientation of the whole arm in the rest pose. A finger solver
     /// that reads the closing axis from geometry must give the same grip for every convention.
     /// </summary>
-    public static class SyntheticHand
+    public static class ReferenceHandRig
     {
         // Knuckle (proximal joint) positions in a canonical right-hand frame: x along the hand (wrist → middle knuckle),
         // y out of the back of the hand (the palm faces −y), z across toward the thumb side. Metres.
@@ -44,17 +45,23 @@ namespace AvatarGo.Core.Tests
             Vector3.Normalize(new Vector3(1f, 0f, -0.12f)),
         };
 
-        /// <summary>The finger names used for the joints.</summary>
-        public static readonly string[] FingerNames = { "Thumb", "Index", "Middle", "Ring", "Little" };
+        // The finger names used in the joint names (L_Index1 … R_Little3, L_Index_End …).
+        private static readonly string[] FingerNames = { "Thumb", "Index", "Middle", "Ring", "Little" };
 
         /// <summary>
         /// A rig with both hands. <paramref name="boneAxis"/> is the local axis every bone points along (e.g. +Y as
         /// Mixamo, +X or −X as other exporters); <paramref name="seed"/> turns each bone by a random twist about
         /// that axis (0: none); <paramref name="armRotation"/> orients the whole rest pose (identity: T-pose with
         /// the palms down).
+        /// Joints are named <c>L_Hand</c>, <c>L_Index1</c> … <c>L_Index3</c>, <c>L_Index_End</c> (R_ for the right side).
         /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">The scale is not positive and finite, the axis is zero or not
+        /// finite, or the rotation is not a unit quaternion.</exception>
         public static HumanoidMap Build(float scale, Vector3 boneAxis, int seed, Quaternion armRotation)
         {
+            if (!(scale > 0f) || !Vectors.IsFinite(scale)) throw new ArgumentOutOfRangeException(nameof(scale), scale, "Scale must be positive and finite.");
+            if (!Vectors.IsFinite(boneAxis) || boneAxis.LengthSquared() < 1e-12f) throw new ArgumentOutOfRangeException(nameof(boneAxis), boneAxis, "The bone axis must be a finite, non-zero vector.");
+            if (!Rotations.IsUnit(armRotation)) throw new ArgumentOutOfRangeException(nameof(armRotation), armRotation, "The arm rotation must be a unit quaternion.");
             var names = new List<string>();
             var parents = new List<int>();
             var world = new List<Pose>();
@@ -115,7 +122,7 @@ namespace AvatarGo.Core.Tests
             return new HumanoidMap(skeleton, bones);
         }
 
-        /// <summary>The default rig: bones along +Y (Mixamo's convention), no twist, T-pose.</summary>
+        /// <summary>The default rig: bones along +Y (Mixamo's convention), no twist, T-pose, palms down.</summary>
         public static HumanoidMap Build(float scale = 1f) => Build(scale, Vector3.UnitY, 0, Quaternion.Identity);
     }
 }

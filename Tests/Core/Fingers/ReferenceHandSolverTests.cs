@@ -10,7 +10,7 @@ namespace AvatarGo.Core.Tests
     /// The finger solver on hands built in code (no mocap needed): every bundled profile, both hands, three hand
     /// sizes, and rigs whose bones point along different local axes with arbitrary twists.
     /// </summary>
-    public class SyntheticHandSolverTests
+    public class ReferenceHandSolverTests
     {
         private static List<ControllerProfile> Profiles()
         {
@@ -32,7 +32,7 @@ namespace AvatarGo.Core.Tests
             foreach (Vector3 axis in Axes)
                 foreach (bool left in new[] { true, false })
                 {
-                    HumanoidMap map = SyntheticHand.Build(1f, axis, 7, Rotations.AngleAxis(70f, new Vector3(0.2f, 0.1f, 1f)));
+                    HumanoidMap map = ReferenceHandRig.Build(1f, axis, 7, Rotations.AngleAxis(70f, new Vector3(0.2f, 0.1f, 1f)));
                     var model = new HandModel(map, left);
                     Skeleton s = map.Skeleton;
                     var pose = new SkeletonPose(s);
@@ -71,7 +71,7 @@ namespace AvatarGo.Core.Tests
                     float[] reference = null;
                     foreach (Vector3 axis in Axes)
                     {
-                        HumanoidMap map = SyntheticHand.Build(1f, axis, 11, Rotations.AngleAxis(-90f, Vector3.UnitZ));
+                        HumanoidMap map = ReferenceHandRig.Build(1f, axis, 11, Rotations.AngleAxis(-90f, Vector3.UnitZ));
                         var model = new HandModel(map, left);
                         var solver = new FingerSolver(model, profile);
                         var hand = new Pose(new Vector3(0.3f, 1.0f, 0.2f), Rotations.AngleAxis(25f, new Vector3(1, 1, 0)));
@@ -91,7 +91,7 @@ namespace AvatarGo.Core.Tests
         [TestCase(1.15f)]
         public void EveryProfileIsHeldWithoutPenetrationAndWithFingertipsOnTheSurface(float scale)
         {
-            HumanoidMap map = SyntheticHand.Build(scale, Vector3.UnitX, 5, Quaternion.Identity);
+            HumanoidMap map = ReferenceHandRig.Build(scale, Vector3.UnitX, 5, Quaternion.Identity);
             foreach (ControllerProfile profile in Profiles())
                 foreach (bool left in new[] { true, false })
                 {
@@ -125,7 +125,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void SameGripAt72_90And144HzAndOpenWithoutOscillationOutOfReach()
         {
-            HumanoidMap map = SyntheticHand.Build(1f, -Vector3.UnitX, 3, Quaternion.Identity);
+            HumanoidMap map = ReferenceHandRig.Build(1f, -Vector3.UnitX, 3, Quaternion.Identity);
             foreach (ControllerProfile profile in Profiles())
             {
                 var model = new HandModel(map, false);
