@@ -126,6 +126,13 @@ namespace AvatarGo.Core
             return new Pose(origin, Rotations.LookRotation(forward, up));
         }
 
+        /// <summary>
+        /// The inverse of <see cref="ControllerInHand"/>: where the hand (wrist) joint sits in the controller's frame when
+        /// it holds <paramref name="profile"/>. A tracked controller pose <c>c</c> puts the avatar's wrist at
+        /// <c>c * WristInController(profile)</c> (what calibration needs to place the wrist on the controller).
+        /// </summary>
+        public Pose WristInController(ControllerProfile profile) => ControllerInHand(profile).Inverse();
+
         /// <summary>Sets the finger joints of <paramref name="pose"/> from the ten-times-three parameters <paramref name="t"/> (finger-major).</summary>
         public void Apply(ReadOnlySpan<float> t, SkeletonPose pose)
         {

@@ -165,5 +165,28 @@ namespace AvatarGo.Core.Tests
                 }
             }
         }
+
+        [Test]
+        public void TheGripPointSitsOnThePalmCentreAndTheWristFollowsTheController()
+        {
+            HumanoidMap map = ReferenceHandRig.Build(1.1f, Vector3.UnitZ, 9, Rotations.AngleAxis(30f, Vector3.UnitY));
+            foreach (ControllerProfile profile in Profiles())
+                foreach (bool left in new[] { true, false })
+                {
+                    var model = new HandModel(map, left);
+                    Pose controllerInHand = model.ControllerInHand(profile);
+                    // The palm centre (on the skin) touches the handle: 2 mm of clearance, within 0.5 mm.
+                    Vector3 palmInController = controllerInHand.InverseTransformPoint(model.PalmCentreInHand);
+                    Assert.That(profile.Shape.Distance(palmInController), Is.EqualTo(0.002f).Within(0.0005f), profile.Name);
+                    // The handle runs across the palm (controller +Y along little → index).
+                    Vector3 handleAxis = controllerInHand.TransformDirection(Vector3.UnitY);
+                    Assert.That(Vector3.Dot(handleAxis, model.AcrossInHand), Is.GreaterThan(0.999f), profile.Name);
+                    // Wrist from a tracked controller pose: c * WristInController puts the palm centre back on the grip.
+                    var c = new Pose(new Vector3(0.1f, 1.2f, 0.4f), Rotations.AngleAxis(120f, new Vector3(1, -2, 0.5f)));
+                    Pose wrist = c * model.WristInController(profile);
+                    Vector3 palmWorld = wrist.TransformPoint(model.PalmCentreInHand);
+                    Assert.That(Vector3.Distance(c.InverseTransformPoint(palmWorld), palmInController), Is.LessThan(1e-5f), profile.Name);
+                }
+        }
     }
 }

@@ -67,10 +67,10 @@ public sealed class FingersCommand : ICommand
             return 0;
         }
         stdout.WriteLine("controller wobbling 2 mm / 3 deg in the hand for 2 s; fingertip gaps of the four fingers, thumb excluded (it seeks the thumb rest)");
-        stdout.WriteLine("rig                        profile       hand   penetration  tip gap median/max   iterations  us/frame  bytes/frame  max dt(72,90,144 Hz)");
+        stdout.WriteLine("rig                        profile       hand   penetration  tip gap median/max   thumb gap  iterations  us/frame  bytes/frame  max dt(72,90,144 Hz)");
         foreach (var r in rows)
             stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"{r["rig"],-26} {r["profile"],-13} {r["hand"],-6} {r["max_penetration_mm"],8:0.00} mm   {r["tip_gap_median_mm"],6:0.0} / {r["tip_gap_max_mm"],-6:0.0} mm {r["iterations_per_frame"],9:0.0} {r["us_per_frame"],9:0.0} {r["bytes_per_frame"],10:0} {r["max_t_difference"],12:0.000}"));
+                $"{r["rig"],-26} {r["profile"],-13} {r["hand"],-6} {r["max_penetration_mm"],8:0.00} mm   {r["tip_gap_median_mm"],6:0.0} / {r["tip_gap_max_mm"],-6:0.0} mm {r["thumb_gap_median_mm"],6:0.0} mm {r["iterations_per_frame"],9:0.0} {r["us_per_frame"],9:0.0} {r["bytes_per_frame"],10:0} {r["max_t_difference"],12:0.000}"));
         return 0;
     }
 
@@ -84,6 +84,7 @@ public sealed class FingersCommand : ICommand
         long bytes = 0;
         int frames = 0, iterations = 0;
         var gaps = new List<double>();
+        var thumbGaps = new List<double>();
         for (int r = 0; r < rates.Length; r++)
         {
             var solver = new FingerSolver(hand, profile);
@@ -103,11 +104,13 @@ public sealed class FingersCommand : ICommand
                     if (!hand.Has(f)) continue;
                     for (int p = 0; p < 3; p++) penetration = Math.Max(penetration, -solver.SurfaceGap(f, p));
                     if (f > 0) gaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
+                    else thumbGaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
                 }
             }
             finals[r] = solver.T.ToArray();
         }
         gaps.Sort();
+        thumbGaps.Sort();
         double maxDiff = 0;
         for (int i = 0; i < 15; i++)
             for (int r = 1; r < rates.Length; r++) maxDiff = Math.Max(maxDiff, Math.Abs(finals[r][i] - finals[0][i]));
@@ -135,6 +138,7 @@ public sealed class FingersCommand : ICommand
             ["max_penetration_mm"] = penetration * 1000.0,
             ["tip_gap_median_mm"] = gaps[gaps.Count / 2],
             ["tip_gap_max_mm"] = gaps[^1],
+            ["thumb_gap_median_mm"] = thumbGaps.Count > 0 ? thumbGaps[thumbGaps.Count / 2] : (object)null,
             ["iterations_per_frame"] = iterations / (double)frames,
             ["us_per_frame"] = usPerHand * 2, // both hands
             ["bytes_per_frame"] = bytes / (double)frames,
