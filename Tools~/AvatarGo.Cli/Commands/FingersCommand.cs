@@ -25,7 +25,8 @@ public sealed class FingersCommand : ICommand
         90 and 144 Hz, and reports per profile and hand: the deepest penetration of a finger into the
         surface (mm), the median and largest fingertip gap (mm), iterations and microseconds per frame
         for both hands, bytes allocated per frame, and the largest difference in the final joint
-        parameters t between the three frame rates.
+        parameters t between the three frame rates. Fingertip gaps are of the four fingers; the thumb
+        tip's gap is reported apart (thumb_gap_median_mm).
           --profile NAME   only this profile (file name without .json)
           --hand WHICH     only this hand: "reference", or a BVH file of a rig with finger bones
           --json           print JSON
@@ -66,7 +67,7 @@ public sealed class FingersCommand : ICommand
             stdout.WriteLine(JsonSerializer.Serialize(new { machine = BenchCommand.Machine(), results = rows }, new JsonSerializerOptions { WriteIndented = true }));
             return 0;
         }
-        stdout.WriteLine("controller wobbling 2 mm / 3 deg in the hand for 2 s; fingertip gaps of the four fingers, thumb excluded (it seeks the thumb rest)");
+        stdout.WriteLine("controller wobbling 2 mm / 3 deg in the hand for 2 s; fingertip gaps of the four fingers; the thumb's apart");
         stdout.WriteLine("rig                        profile       hand   penetration  tip gap median/max   thumb gap  iterations  us/frame  bytes/frame  max dt(72,90,144 Hz)");
         foreach (var r in rows)
             stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
