@@ -168,12 +168,15 @@ namespace AvatarGo.Core
                 float frameTime = ParseHeaderNumber("Frame Time:", out int timeLine, integer: false);
                 if (!(frameTime > 0f) || float.IsInfinity(frameTime)) throw Error(timeLine, $"frame time must be a positive number of seconds, found {frameTime.ToString(CultureInfo.InvariantCulture)}");
 
-                var values = new float[(long)frames * _channelTotal];
+                // Grow as frame lines arrive: the header's frame count is not trusted to size memory (a file that
+                // claims ten million frames must fail at its end, not allocate gigabytes first).
+                var values = new float[(long)Math.Min(frames, 4096) * _channelTotal];
                 int k = 0;
                 for (int f = 0; f < frames; f++)
                 {
                     string line = NextNonEmptyLine();
                     if (line == null) throw Error(_lineNumber + 1, $"the file ends after {f} of {frames} frames (truncated?)");
+                    if ((long)k + _channelTotal > values.Length) Array.Resize(ref values, (int)Math.Min((long)values.Length * 2 + _channelTotal, (long)frames * _channelTotal));
                     int count = 0;
                     int pos = 0;
                     while (NextField(line, ref pos, out int start, out int length))
@@ -191,6 +194,7 @@ namespace AvatarGo.Core
 
                 try
                 {
+                    if (values.Length != k) Array.Resize(ref values, k);
                     return new BvhClip(_names, _parents, _endSites, _offsets, _channels, frames, frameTime, values, scale);
                 }
                 catch (ArgumentException e)
