@@ -8,7 +8,8 @@ namespace AvatarGo.Core
     /// finger's moving points (intermediate and distal joints, fingertip) of their distance to the controller's
     /// surface, negative distances (penetration) multiplied by <see cref="Penalty"/> before taking the absolute value
     /// — plus the thumb tip toward the thumb rest and the index tip toward the trigger, and a small term keeping a
-    /// finger's three joints curling together. Distances are measured from the finger's surface (joint centre minus
+    /// finger's three joints curling together. The thumb arches over the controller to its rest, so only its tip is
+    /// drawn to the surface; its joints are only kept out of it. Distances are measured from the finger's surface (joint centre minus
     /// <see cref="HandModel.FingerRadius"/>), so contact means skin on plastic, not bone.
     /// </summary>
     /// <remarks>
@@ -36,32 +37,41 @@ namespace AvatarGo.Core
 
         private readonly HandModel _hand;
         private readonly ControllerProfile _profile;
-        private readonly float[] _solved = new float[15];
-        private readonly float[] _start = new float[15];
-        private readonly float[] _t = new float[15];
+        private readonly float[] _solved = new float[HandModel.ParameterCount];
+        private readonly float[] _start = new float[HandModel.ParameterCount];
+        private readonly float[] _t = new float[HandModel.ParameterCount];
         private readonly Vector3[] _points = new Vector3[3];
         private readonly Vector3[] _pointGradients = new Vector3[3];
         private Pose _handInController;
         private readonly Pose[] _fingerBase = new Pose[5];
+        private readonly Vector3 _thumbGoal, _indexGoal;
 
         /// <summary>Creates a solver for one hand and one controller.</summary>
         public FingerSolver(HandModel hand, ControllerProfile profile)
         {
             _hand = hand ?? throw new ArgumentNullException(nameof(hand));
             _profile = profile ?? throw new ArgumentNullException(nameof(profile));
-            // The start of every frame's descent: the grip solved once, from half-closed, with the controller
-            // exactly where this hand holds it. Near every frame's answer, and the same whatever the frame rate.
-            for (int i = 0; i < 15; i++) _start[i] = 0.5f;
-            Solve(Pose.Identity, hand.ControllerInHand(profile), GripMode.Hold);
-            Array.Copy(_solved, _start, 15);
-            Array.Clear(_solved, 0, 15);
-            Array.Clear(_t, 0, 15);
+            _thumbGoal = Lifted(profile.ThumbRest);
+            _indexGoal = Lifted(profile.Trigger);
+            // The start of every frame's descent: the grip solved once with the controller exactly where this hand
+            // holds it, from the best point of a coarse grid over each finger's parameters (the cost has local
+            // minima: a thumb whose tip touches the side of the controller's head stays there). Near every frame's
+            // answer, and the same whatever the frame rate.
+            Pose held = hand.ControllerInHand(profile);
+            _handInController = held.Inverse();
+            for (int f = 0; f < 5; f++) _fingerBase[f] = _handInController * _hand.RestRelative[f, 0];
+            for (int f = 0; f < 5; f++)
+                if (_hand.HasFinger[f]) GridStart(f);
+            Solve(Pose.Identity, held, GripMode.Hold);
+            Array.Copy(_solved, _start, HandModel.ParameterCount);
+            Array.Clear(_solved, 0, HandModel.ParameterCount);
+            Array.Clear(_t, 0, HandModel.ParameterCount);
         }
 
         /// <summary>The hand.</summary>
         public HandModel Hand => _hand;
 
-        /// <summary>The 15 joint parameters after the last <see cref="Solve"/> (finger-major: thumb 0–2, index 3–5, …).</summary>
+        /// <summary>The <see cref="HandModel.ParameterCount"/> joint parameters after the last <see cref="Solve"/> (finger-major: thumb 0–2, index 3–5, …, then the thumb's spread).</summary>
         public ReadOnlySpan<float> T => _t;
 
         /// <summary>Iterations used by the last solve, summed over the fingers.</summary>
@@ -84,8 +94,8 @@ namespace AvatarGo.Core
             OutOfReach = _profile.Shape.Distance(palm) > ReachDistance;
             if (mode == GripMode.Open || OutOfReach)
             {
-                Array.Clear(_solved, 0, 15);
-                Array.Clear(_t, 0, 15);
+                Array.Clear(_solved, 0, HandModel.ParameterCount);
+                Array.Clear(_t, 0, HandModel.ParameterCount);
                 return;
             }
             for (int f = 0; f < 5; f++)
@@ -106,29 +116,74 @@ namespace AvatarGo.Core
                 float blend = mode != GripMode.InputDriven ? 1f : f == 1 ? v : g;
                 for (int k = 0; k < 3; k++) _t[f * 3 + k] = _solved[f * 3 + k] * blend;
             }
+            _t[HandModel.ThumbSpread] = _solved[HandModel.ThumbSpread] * (mode != GripMode.InputDriven ? 1f : g);
         }
 
         /// <summary>
         /// The signed distance (m) from the controller's surface to the skin at a finger point after the last solve:
         /// point 0 intermediate joint, 1 distal joint, 2 fingertip. Negative: penetration.
         /// </summary>
-        public float SurfaceGap(int finger, int point)
+        public float SurfaceGap(int finger, int point) => _profile.Shape.Distance(PointInController(finger, point)) - _hand.FingerRadius;
+
+        /// <summary>
+        /// How far (m) the fingertip of the thumb (<paramref name="finger"/> 0) or the index (1) is, after the last solve,
+        /// from resting on the thumb rest or the trigger: the distance from the fingertip's centre to its goal, the
+        /// profile's point lifted one finger radius off the surface (where the fingertip's centre is when its pad
+        /// touches the point).
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Not the thumb or the index.</exception>
+        public float GoalDistance(int finger)
         {
-            Pose w0, w1, w2;
-            Chain(finger, _t[finger * 3], _t[finger * 3 + 1], _t[finger * 3 + 2], out w0, out w1, out w2);
-            Vector3 p = point == 0 ? w1.Position : point == 1 ? w2.Position : w2.TransformPoint(_hand.TipLocal[finger]);
-            return _profile.Shape.Distance(p) - _hand.FingerRadius;
+            if (finger != 0 && finger != 1) throw new ArgumentOutOfRangeException(nameof(finger), finger, "Only the thumb (0) and the index (1) have goals.");
+            return Vector3.Distance(PointInController(finger, 2), finger == 0 ? _thumbGoal : _indexGoal);
+        }
+
+        /// <summary>
+        /// A finger point after the last solve, in the controller's frame (the frame of the profile's trigger and
+        /// thumb rest): point 0 intermediate joint, 1 distal joint, 2 fingertip.
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">The finger is not 0–4 or the point not 0–2.</exception>
+        public Vector3 PointInController(int finger, int point)
+        {
+            if ((uint)finger > 4) throw new ArgumentOutOfRangeException(nameof(finger), finger, "Fingers are 0 (thumb) to 4 (little).");
+            if ((uint)point > 2) throw new ArgumentOutOfRangeException(nameof(point), point, "Points are 0 (intermediate joint), 1 (distal joint) and 2 (fingertip).");
+            int o = finger * 3;
+            Chain(finger, new Vector4(_t[o], _t[o + 1], _t[o + 2], finger == 0 ? _t[HandModel.ThumbSpread] : 0f), out _, out Pose w1, out Pose w2);
+            return point == 0 ? w1.Position : point == 1 ? w2.Position : w2.TransformPoint(_hand.TipLocal[finger]);
+        }
+
+        // Sets finger f's start to the lowest-cost point of a grid over its parameters (7 values each: 343 points
+        // for a finger, 2401 for the thumb). Once per solver, at construction.
+        private void GridStart(int f)
+        {
+            const int steps = 7;
+            bool thumb = f == 0;
+            int spreads = thumb ? steps : 1;
+            float best = float.MaxValue;
+            Vector4 bestT = Vector4.Zero;
+            for (int i = 0; i < steps; i++)
+                for (int j = 0; j < steps; j++)
+                    for (int k = 0; k < steps; k++)
+                        for (int m = 0; m < spreads; m++)
+                        {
+                            var t = new Vector4(i, j, k, m) / (steps - 1);
+                            float cost = Cost(f, t, out _);
+                            if (cost < best) { best = cost; bestT = t; }
+                        }
+            _start[f * 3] = bestT.X; _start[f * 3 + 1] = bestT.Y; _start[f * 3 + 2] = bestT.Z;
+            if (thumb) _start[HandModel.ThumbSpread] = bestT.W;
         }
 
         private int SolveFinger(int f)
         {
             int o = f * 3;
+            bool thumb = f == 0;
             // Every frame starts from the same place (_start), not from the last frame: where the cost is flat (a
             // long finger already wrapped past a thin handle) a warm start settles wherever it came from, which made
             // the grip depend on the frame rate by up to 0.035 in t. This way the grip is a function of this frame's
-            // controller pose alone.
-            float t0 = _start[o], t1 = _start[o + 1], t2 = _start[o + 2];
-            float cost = Cost(f, t0, t1, t2, out Vector3 grad);
+            // controller pose alone. Parameters: x, y, z the three joints; w the thumb's spread (0 for a finger).
+            var t = new Vector4(_start[o], _start[o + 1], _start[o + 2], thumb ? _start[HandModel.ThumbSpread] : 0f);
+            float cost = Cost(f, t, out Vector4 grad);
             int iterations = 0;
             float lastStep = float.MaxValue;
             for (; iterations < MaxIterations; iterations++)
@@ -139,31 +194,31 @@ namespace AvatarGo.Core
                 // so that a finger resting against the surface does not backtrack from a huge step every iteration.
                 float step = Math.Min(Math.Min(cost / g2, 0.5f / (float)Math.Sqrt(g2)), 2f * lastStep);
                 bool improved = false;
-                float n0 = t0, n1 = t1, n2 = t2, newCost = cost;
-                Vector3 newGrad = grad;
+                Vector4 next = t, nextGrad = grad;
+                float nextCost = cost;
                 for (int backtrack = 0; backtrack < 8; backtrack++)
                 {
-                    n0 = Clamp01(t0 - step * grad.X);
-                    n1 = Clamp01(t1 - step * grad.Y);
-                    n2 = Clamp01(t2 - step * grad.Z);
-                    newCost = Cost(f, n0, n1, n2, out newGrad);
-                    if (newCost < cost) { improved = true; break; }
+                    next = Vector4.Clamp(t - step * grad, Vector4.Zero, thumb ? Vector4.One : new Vector4(1f, 1f, 1f, 0f));
+                    nextCost = Cost(f, next, out nextGrad);
+                    if (nextCost < cost) { improved = true; break; }
                     step *= 0.5f;
                 }
                 if (!improved) break;
                 lastStep = step;
-                float moved = Math.Max(Math.Abs(n0 - t0), Math.Max(Math.Abs(n1 - t1), Math.Abs(n2 - t2)));
-                t0 = n0; t1 = n1; t2 = n2; cost = newCost; grad = newGrad;
+                Vector4 change = Vector4.Abs(next - t);
+                float moved = Math.Max(Math.Max(change.X, change.Y), Math.Max(change.Z, change.W));
+                t = next; cost = nextCost; grad = nextGrad;
                 if (moved < 2e-3f) { iterations++; break; }
             }
-            _solved[o] = t0; _solved[o + 1] = t1; _solved[o + 2] = t2;
+            _solved[o] = t.X; _solved[o + 1] = t.Y; _solved[o + 2] = t.Z;
+            if (thumb) _solved[HandModel.ThumbSpread] = t.W;
             return iterations;
         }
 
-        // The cost of finger f at (t0, t1, t2) and its gradient with respect to them.
-        private float Cost(int f, float t0, float t1, float t2, out Vector3 gradient)
+        // The cost of finger f at parameters t (x, y, z its joints, w the thumb's spread) and its gradient.
+        internal float Cost(int f, Vector4 t, out Vector4 gradient)
         {
-            Chain(f, t0, t1, t2, out Pose w0, out Pose w1, out Pose w2);
+            Chain(f, t, out Pose w0, out Pose w1, out Pose w2);
             _points[0] = w1.Position;
             _points[1] = w2.Position;
             _points[2] = w2.TransformPoint(_hand.TipLocal[f]);
@@ -171,18 +226,21 @@ namespace AvatarGo.Core
             Vector3 a0 = Vector3.Transform(_hand.AxisLocal[f, 0], w0.Rotation) * _hand.MaxRadians[f, 0];
             Vector3 a1 = Vector3.Transform(_hand.AxisLocal[f, 1], w1.Rotation) * _hand.MaxRadians[f, 1];
             Vector3 a2 = Vector3.Transform(_hand.AxisLocal[f, 2], w2.Rotation) * _hand.MaxRadians[f, 2];
+            bool thumb = f == 0;
             float cost = 0f;
             for (int i = 0; i < 3; i++)
             {
                 float s = _profile.Shape.Evaluate(_points[i], out Vector3 g) - _hand.FingerRadius;
-                float weight = s >= 0f ? 1f : -Penalty;
+                // The paper's cost for a finger: every point drawn to the surface, penetration penalised. The thumb
+                // arches over the controller to its rest: its joints are only kept out, its tip is drawn to the surface.
+                float weight = s < 0f ? -Penalty : thumb && i < 2 ? 0f : 1f;
                 cost += s * weight;
                 _pointGradients[i] = g * weight;
             }
             Vector3 goalGradient = Vector3.Zero;
             if (f == 0 || f == 1)
             {
-                Vector3 goal = f == 0 ? _profile.ThumbRest : _profile.Trigger;
+                Vector3 goal = f == 0 ? _thumbGoal : _indexGoal;
                 Vector3 d = _points[2] - goal;
                 float len = d.Length();
                 cost += GoalWeight * len;
@@ -195,24 +253,45 @@ namespace AvatarGo.Core
             float g1 = Vector3.Dot(_pointGradients[1], Vector3.Cross(a1, _points[1] - w1.Position))
                      + Vector3.Dot(tipGradient, Vector3.Cross(a1, _points[2] - w1.Position));
             float g2 = Vector3.Dot(tipGradient, Vector3.Cross(a2, _points[2] - w2.Position));
-            float d01 = t0 - t1, d12 = t1 - t2;
+            float gs = 0f;
+            if (thumb)
+            {
+                // The spread axis is fixed in the thumb base's rest frame (the spread turns before the flexion).
+                Vector3 a3 = Vector3.Transform(_hand.ThumbSpreadAxisLocal, _fingerBase[0].Rotation) * _hand.ThumbSpreadRadians;
+                gs = Vector3.Dot(_pointGradients[0], Vector3.Cross(a3, _points[0] - w0.Position))
+                   + Vector3.Dot(_pointGradients[1], Vector3.Cross(a3, _points[1] - w0.Position))
+                   + Vector3.Dot(tipGradient, Vector3.Cross(a3, _points[2] - w0.Position));
+            }
+            // Fingers curl their three joints together; the thumb's first joint moves in another direction than its
+            // outer two, so only those two are tied.
+            float d01 = thumb ? 0f : t.X - t.Y, d12 = t.Y - t.Z;
             cost += Smoothness * (d01 * d01 + d12 * d12);
-            gradient = new Vector3(g0 + 2f * Smoothness * d01, g1 + 2f * Smoothness * (d12 - d01), g2 - 2f * Smoothness * d12);
+            gradient = new Vector4(g0 + 2f * Smoothness * d01, g1 + 2f * Smoothness * (d12 - d01), g2 - 2f * Smoothness * d12, gs);
             return cost;
         }
 
         // Forward kinematics of finger f in the controller frame. The quaternions stay unit to float precision
         // over three products, so this hot path skips the renormalisation Pose's operator does.
-        private void Chain(int f, float t0, float t1, float t2, out Pose w0, out Pose w1, out Pose w2)
+        private void Chain(int f, Vector4 t, out Pose w0, out Pose w1, out Pose w2)
         {
             Pose b = _fingerBase[f];
-            Quaternion r0 = b.Rotation * Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 0], t0 * _hand.MaxRadians[f, 0]);
+            Quaternion bend0 = Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 0], t.X * _hand.MaxRadians[f, 0]);
+            if (f == 0) bend0 = Quaternion.CreateFromAxisAngle(_hand.ThumbSpreadAxisLocal, t.W * _hand.ThumbSpreadRadians) * bend0;
+            Quaternion r0 = b.Rotation * bend0;
             w0 = new Pose(b.Position, r0);
             Pose rest1 = _hand.RestRelative[f, 1], rest2 = _hand.RestRelative[f, 2];
-            Quaternion r1 = r0 * rest1.Rotation * Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 1], t1 * _hand.MaxRadians[f, 1]);
+            Quaternion r1 = r0 * rest1.Rotation * Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 1], t.Y * _hand.MaxRadians[f, 1]);
             w1 = new Pose(b.Position + Vector3.Transform(rest1.Position, r0), r1);
-            Quaternion r2 = r1 * rest2.Rotation * Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 2], t2 * _hand.MaxRadians[f, 2]);
+            Quaternion r2 = r1 * rest2.Rotation * Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 2], t.Z * _hand.MaxRadians[f, 2]);
             w2 = new Pose(w1.Position + Vector3.Transform(rest2.Position, r1), r2);
+        }
+
+        // Where a fingertip's centre is when its pad touches the surface point p: p moved along the surface normal to
+        // one finger radius off the surface.
+        private Vector3 Lifted(Vector3 p)
+        {
+            float d = _profile.Shape.Evaluate(p, out Vector3 normal);
+            return p + normal * (_hand.FingerRadius - d);
         }
 
         private static float Clamp01(float v) => v < 0f ? 0f : v > 1f ? 1f : v;

@@ -6,17 +6,34 @@ namespace AvatarGo.Core
     /// <summary>
     /// One hand of an avatar for finger IK: per finger (thumb, index, middle, ring, little) its three joints, their
     /// open rotations (the rig's rest pose) and closed rotations, and a fingertip point. Each joint closes about an
-    /// axis found from the hand's geometry — the palm normal from the finger bases, crossed with the finger's own
-    /// direction — so any rig works whatever local axis its bones bend about. Joint <c>j</c> of finger <c>f</c> has a
-    /// parameter <c>t</c> in [0, 1] blending its open rotation to its closed one (the paper's <c>t_f^j</c>).
+    /// axis found from the hand's geometry, so any rig works whatever local axis its bones bend about: a finger bends
+    /// about the palm normal crossed with the finger's direction; the thumb's two outer joints bend toward the little
+    /// finger's base (the thumb's own flexion, which curls it across the palm); and the thumb's first joint has two
+    /// parameters, like Unity's humanoid muscles (Thumb 1 Stretched and Thumb Spread): it turns toward the palm normal
+    /// and, separately, lifts the thumb radially (toward the thumb side, over the top of a controller).
+    /// Joint <c>j</c> of finger <c>f</c> has a parameter <c>t</c> in [0, 1] blending its open rotation to its closed one
+    /// (the paper's <c>t_f^j</c>), stored at <c>f * 3 + j</c>; the thumb's spread is parameter <see cref="ThumbSpread"/>.
     /// </summary>
     public sealed class HandModel
     {
-        /// <summary>How far each joint closes, in degrees: proximal, intermediate, distal (fingers; thumb).</summary>
-        public static readonly float[] FingerClosing = { 80f, 100f, 70f };
+        /// <summary>The number of joint parameters of a hand: five fingers of three joints, plus the thumb's spread.</summary>
+        public const int ParameterCount = 16;
 
-        /// <summary>How far each thumb joint closes, in degrees.</summary>
-        public static readonly float[] ThumbClosing = { 40f, 50f, 60f };
+        /// <summary>The index of the thumb's second parameter at its first joint (radial spread), after the 15 joint parameters.</summary>
+        public const int ThumbSpread = 15;
+
+        /// <summary>How far the thumb's first joint spreads (lifts radially) at a spread parameter of 1, in degrees.</summary>
+        public const float ThumbSpreadDegrees = 60f;
+
+        // How far each joint closes at t = 1, in degrees: proximal, intermediate, distal.
+        private static readonly float[] FingerClosing = { 80f, 100f, 70f };
+        private static readonly float[] ThumbClosing = { 40f, 50f, 70f };
+
+        /// <summary>
+        /// How far joint <paramref name="joint"/> (0 proximal, 1 intermediate, 2 distal) of finger <paramref name="finger"/>
+        /// (0 thumb … 4 little) closes at t = 1, in degrees: fingers 80, 100, 70; thumb 40, 50, 70.
+        /// </summary>
+        public static float ClosingDegrees(int finger, int joint) => (finger == 0 ? ThumbClosing : FingerClosing)[joint];
 
         /// <summary>
         /// Where the handle crosses the palm, as a fraction of the way from the wrist to the middle knuckle (0.8: at the
@@ -30,6 +47,8 @@ namespace AvatarGo.Core
         internal readonly float[,] MaxRadians = new float[5, 3];
         internal readonly Vector3[] TipLocal = new Vector3[5];
         internal readonly bool[] HasFinger = new bool[5];
+        internal Vector3 ThumbSpreadAxisLocal;   // in the thumb's first joint's rest frame
+        internal float ThumbSpreadRadians;
 
         /// <summary>Builds the model of the left or right hand of <paramref name="map"/>'s rig from its rest pose.</summary>
         /// <exception cref="ArgumentException">The rig has no hand bone or no complete finger on that side.</exception>
@@ -73,12 +92,26 @@ namespace AvatarGo.Core
                 TipLocal[f] = TipOf(s, world, j1, j2);
                 Vector3 direction = Vector3.Normalize(world[j2].Position - world[j0].Position);
                 Vector3 axis = Vectors.NormalizeOr(Vector3.Cross(direction, palm), Vector3.Cross(along, palm));
-                float[] closing = f == 0 ? ThumbClosing : FingerClosing;
                 int[] joints = { j0, j1, j2 };
                 for (int k = 0; k < 3; k++)
                 {
-                    AxisLocal[f, k] = Vector3.Transform(axis, Quaternion.Conjugate(world[joints[k]].Rotation));
-                    MaxRadians[f, k] = closing[k] * Rotations.Deg2Rad;
+                    Vector3 jointAxis = axis;
+                    if (f == 0 && k > 0)
+                    {
+                        // The thumb's outer joints curl it toward the little finger's base (flexion of a thumb that
+                        // faces the fingers), not straight into the palm.
+                        Vector3 toLittle = world[little].Position - world[j0].Position;
+                        jointAxis = Vectors.NormalizeOr(Vector3.Cross(direction, toLittle - direction * Vector3.Dot(toLittle, direction)), axis);
+                    }
+                    AxisLocal[f, k] = Vector3.Transform(jointAxis, Quaternion.Conjugate(world[joints[k]].Rotation));
+                    MaxRadians[f, k] = ClosingDegrees(f, k) * Rotations.Deg2Rad;
+                }
+                if (f == 0)
+                {
+                    // Spread: turns the thumb toward the radial side (little-to-index, continued past the index).
+                    Vector3 spread = Vectors.NormalizeOr(Vector3.Cross(direction, across), Vector3.Cross(direction, palm));
+                    ThumbSpreadAxisLocal = Vector3.Transform(spread, Quaternion.Conjugate(world[j0].Rotation));
+                    ThumbSpreadRadians = ThumbSpreadDegrees * Rotations.Deg2Rad;
                 }
             }
             if (!HasFinger[1] || !HasFinger[2]) throw new ArgumentException("The hand needs complete index and middle fingers.", nameof(map));
@@ -133,22 +166,37 @@ namespace AvatarGo.Core
         /// </summary>
         public Pose WristInController(ControllerProfile profile) => ControllerInHand(profile).Inverse();
 
-        /// <summary>Sets the finger joints of <paramref name="pose"/> from the ten-times-three parameters <paramref name="t"/> (finger-major).</summary>
+        /// <summary>
+        /// Sets the finger joints of <paramref name="pose"/> from the <see cref="ParameterCount"/> parameters
+        /// <paramref name="t"/> (finger-major, then the thumb's spread), each clamped to [0, 1].
+        /// </summary>
+        /// <exception cref="ArgumentException">Fewer than <see cref="ParameterCount"/> parameters.</exception>
         public void Apply(ReadOnlySpan<float> t, SkeletonPose pose)
         {
-            if (t.Length < 15) throw new ArgumentException("15 parameters (5 fingers × 3 joints) are needed.", nameof(t));
+            if (t.Length < ParameterCount) throw new ArgumentException($"{ParameterCount} parameters (5 fingers × 3 joints, and the thumb's spread) are needed.", nameof(t));
+            if (pose == null) throw new ArgumentNullException(nameof(pose));
             for (int f = 0; f < 5; f++)
             {
                 if (!HasFinger[f]) continue;
                 for (int k = 0; k < 3; k++)
                 {
                     int j = Joints[f, k];
-                    Quaternion bend = Quaternion.CreateFromAxisAngle(AxisLocal[f, k], Math.Max(0f, Math.Min(1f, t[f * 3 + k])) * MaxRadians[f, k]);
                     Pose rest = pose.Skeleton.GetRestLocal(j);
-                    pose.Local[j] = new Pose(rest.Position, Quaternion.Normalize(rest.Rotation * bend));
+                    pose.Local[j] = new Pose(rest.Position, Quaternion.Normalize(rest.Rotation * Bend(f, k, t[f * 3 + k], f == 0 && k == 0 ? t[ThumbSpread] : 0f)));
                 }
             }
         }
+
+        // The rotation of joint k of finger f relative to its rest rotation. The thumb's first joint spreads first
+        // (about an axis fixed in its rest frame), then flexes about its flexion axis carried by the spread.
+        internal Quaternion Bend(int f, int k, float t, float spread)
+        {
+            Quaternion bend = Quaternion.CreateFromAxisAngle(AxisLocal[f, k], Clamp01(t) * MaxRadians[f, k]);
+            if (f != 0 || k != 0) return bend;
+            return Quaternion.CreateFromAxisAngle(ThumbSpreadAxisLocal, Clamp01(spread) * ThumbSpreadRadians) * bend;
+        }
+
+        private static float Clamp01(float v) => v > 0f ? (v < 1f ? v : 1f) : 0f;
 
         private static Vector3 TipOf(Skeleton s, Pose[] world, int j1, int j2)
         {

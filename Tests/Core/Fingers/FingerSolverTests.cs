@@ -73,7 +73,7 @@ namespace AvatarGo.Core.Tests
                     var hand = new Pose(new Vector3(0.2f, 1.1f, 0.3f), Rotations.AngleAxis(40f, new Vector3(0.3f, 1, 0.2f)));
                     sa.Solve(hand, hand * ha.ControllerInHand(profile), GripMode.Hold);
                     sb.Solve(hand, hand * hb.ControllerInHand(profile), GripMode.Hold);
-                    for (int i = 0; i < 15; i++)
+                    for (int i = 0; i < HandModel.ParameterCount; i++)
                         Assert.That(sb.T[i], Is.EqualTo(sa.T[i]).Within(0.01f), $"{profile.Name} {(left ? "left" : "right")} parameter {i}");
                     Assert.That(sa.T[4], Is.GreaterThan(0.3f), "the index closes");
                 }
@@ -91,14 +91,14 @@ namespace AvatarGo.Core.Tests
                 solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Hold);
                 Assert.That(solver.T[4], Is.GreaterThan(0.3f));
                 solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Open);
-                for (int i = 0; i < 15; i++) Assert.That(solver.T[i], Is.EqualTo(0f));
+                for (int i = 0; i < HandModel.ParameterCount; i++) Assert.That(solver.T[i], Is.EqualTo(0f));
                 solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Hold);
                 var away = new Pose(new Vector3(0, 0, 0.5f), Quaternion.Identity) * (h * hand.ControllerInHand(profile));
                 for (int frame = 0; frame < 3; frame++)
                 {
                     solver.Solve(h, away, GripMode.Hold);
                     Assert.That(solver.OutOfReach, Is.True);
-                    for (int i = 0; i < 15; i++) Assert.That(solver.T[i], Is.EqualTo(0f), "open, and staying open");
+                    for (int i = 0; i < HandModel.ParameterCount; i++) Assert.That(solver.T[i], Is.EqualTo(0f), "open, and staying open");
                 }
             }
         }
@@ -125,7 +125,7 @@ namespace AvatarGo.Core.Tests
                     }
                     final[r] = solver.T.ToArray();
                 }
-                for (int i = 0; i < 15; i++)
+                for (int i = 0; i < HandModel.ParameterCount; i++)
                 {
                     Assert.That(Math.Abs(final[0][i] - final[2][i]), Is.LessThanOrEqualTo(0.02f), $"{profile.Name} parameter {i}, 72 vs 144 Hz");
                     Assert.That(Math.Abs(final[1][i] - final[2][i]), Is.LessThanOrEqualTo(0.02f), $"{profile.Name} parameter {i}, 90 vs 144 Hz");

@@ -26,7 +26,8 @@ public sealed class FingersCommand : ICommand
         surface (mm), the median and largest fingertip gap (mm), iterations and microseconds per frame
         for both hands, bytes allocated per frame, and the largest difference in the final joint
         parameters t between the three frame rates. Fingertip gaps are of the four fingers; the thumb
-        tip's gap is reported apart (thumb_gap_median_mm).
+        tip's gap is reported apart (thumb_gap_median_mm), with how far (median) the thumb's and the
+        index's pads are from resting on the profile's thumb rest and trigger (FingerSolver.GoalDistance).
           --profile NAME   only this profile (file name without .json)
           --hand WHICH     only this hand: "reference", or a BVH file of a rig with finger bones
           --json           print JSON
@@ -68,10 +69,10 @@ public sealed class FingersCommand : ICommand
             return 0;
         }
         stdout.WriteLine("controller wobbling 2 mm / 3 deg in the hand for 2 s; fingertip gaps of the four fingers; the thumb's apart");
-        stdout.WriteLine("rig                        profile       hand   penetration  tip gap median/max   thumb gap  iterations  us/frame  bytes/frame  max dt(72,90,144 Hz)");
+        stdout.WriteLine("rig                        profile       hand   penetration  tip gap median/max   thumb gap  thumb-rest  index-trigger  iterations  us/frame  bytes/frame  max dt(72,90,144 Hz)");
         foreach (var r in rows)
             stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"{r["rig"],-26} {r["profile"],-13} {r["hand"],-6} {r["max_penetration_mm"],8:0.00} mm   {r["tip_gap_median_mm"],6:0.0} / {r["tip_gap_max_mm"],-6:0.0} mm {r["thumb_gap_median_mm"],6:0.0} mm {r["iterations_per_frame"],9:0.0} {r["us_per_frame"],9:0.0} {r["bytes_per_frame"],10:0} {r["max_t_difference"],12:0.000}"));
+                $"{r["rig"],-26} {r["profile"],-13} {r["hand"],-6} {r["max_penetration_mm"],8:0.00} mm   {r["tip_gap_median_mm"],6:0.0} / {r["tip_gap_max_mm"],-6:0.0} mm {r["thumb_gap_median_mm"],6:0.0} mm {r["thumb_to_rest_median_mm"],7:0.0} mm {r["index_to_trigger_median_mm"],9:0.0} mm  {r["iterations_per_frame"],9:0.0} {r["us_per_frame"],9:0.0} {r["bytes_per_frame"],10:0} {r["max_t_difference"],12:0.000}"));
         return 0;
     }
 
@@ -86,6 +87,8 @@ public sealed class FingersCommand : ICommand
         int frames = 0, iterations = 0;
         var gaps = new List<double>();
         var thumbGaps = new List<double>();
+        var thumbToRest = new List<double>();
+        var indexToTrigger = new List<double>();
         for (int r = 0; r < rates.Length; r++)
         {
             var solver = new FingerSolver(hand, profile);
@@ -107,13 +110,17 @@ public sealed class FingersCommand : ICommand
                     if (f > 0) gaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
                     else thumbGaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
                 }
+                if (hand.Has(0)) thumbToRest.Add(solver.GoalDistance(0) * 1000.0);
+                indexToTrigger.Add(solver.GoalDistance(1) * 1000.0);
             }
             finals[r] = solver.T.ToArray();
         }
         gaps.Sort();
         thumbGaps.Sort();
+        thumbToRest.Sort();
+        indexToTrigger.Sort();
         double maxDiff = 0;
-        for (int i = 0; i < 15; i++)
+        for (int i = 0; i < HandModel.ParameterCount; i++)
             for (int r = 1; r < rates.Length; r++) maxDiff = Math.Max(maxDiff, Math.Abs(finals[r][i] - finals[0][i]));
         // Timing: the 90 Hz sequence replayed 7 times, keeping the fastest pass (the machine may be busy with
         // other work; the fastest pass is the solver's own cost).
@@ -140,6 +147,8 @@ public sealed class FingersCommand : ICommand
             ["tip_gap_median_mm"] = gaps[gaps.Count / 2],
             ["tip_gap_max_mm"] = gaps[^1],
             ["thumb_gap_median_mm"] = thumbGaps.Count > 0 ? thumbGaps[thumbGaps.Count / 2] : (object)null,
+            ["thumb_to_rest_median_mm"] = thumbToRest.Count > 0 ? thumbToRest[thumbToRest.Count / 2] : (object)null,
+            ["index_to_trigger_median_mm"] = indexToTrigger[indexToTrigger.Count / 2],
             ["iterations_per_frame"] = iterations / (double)frames,
             ["us_per_frame"] = usPerHand * 2, // both hands
             ["bytes_per_frame"] = bytes / (double)frames,

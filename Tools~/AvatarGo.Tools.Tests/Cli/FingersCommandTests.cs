@@ -19,9 +19,9 @@ public class FingersCommandTests
             Assert.That(row.GetProperty("bytes_per_frame").GetDouble(), Is.EqualTo(0.0), what);
             // The grip is a function of the controller pose alone: identical at 72, 90 and 144 Hz.
             Assert.That(row.GetProperty("max_t_difference").GetDouble(), Is.LessThanOrEqualTo(0.02), what);
-            // The bounds: fingertip gap median within 3 mm (measured 0.0 mm), penetration within 1 mm
-            // (measured at most 0.01 mm).
+            // The bounds: fingertip gap median within 3 mm, the thumb's too; penetration within 1 mm.
             Assert.That(row.GetProperty("tip_gap_median_mm").GetDouble(), Is.LessThanOrEqualTo(3.0), what);
+            Assert.That(row.GetProperty("thumb_gap_median_mm").GetDouble(), Is.LessThanOrEqualTo(3.0), what);
             Assert.That(row.GetProperty("max_penetration_mm").GetDouble(), Is.LessThanOrEqualTo(1.0), what);
         }
         Assert.That(rows, Is.EqualTo(6), "three profiles, two hands");
@@ -41,6 +41,7 @@ public class FingersCommandTests
             string what = row.GetProperty("rig").GetString() + " " + row.GetProperty("hand").GetString();
             Assert.That(row.GetProperty("max_penetration_mm").GetDouble(), Is.LessThanOrEqualTo(1.0), what);
             Assert.That(row.GetProperty("tip_gap_median_mm").GetDouble(), Is.LessThanOrEqualTo(3.0), what);
+            Assert.That(row.GetProperty("thumb_gap_median_mm").GetDouble(), Is.LessThanOrEqualTo(3.0), what);
         }
         Assert.That(rigs, Is.EqualTo(new[] { "reference", "reference", "mixamo_fingers_30fps.bvh", "mixamo_fingers_30fps.bvh" }));
     }
