@@ -14,9 +14,11 @@ namespace AvatarGo.Core
     /// </summary>
     /// <remarks>
     /// Each frame runs projected gradient descent to convergence (Polyak step size with backtracking, analytic
-    /// gradients from the SDF gradients and the joints' rotation axes, parameters clamped to [0, 1]), started
-    /// every frame from the grip solved once for the nominal hold (not from the last frame); it stops when no parameter moves more than 2e-3 (0.2° at a joint) or after <see cref="MaxIterations"/>.
-    /// The result therefore depends on the controller's pose, not on the frame rate. No allocation per frame.
+    /// gradients from the SDF gradients and the joints' rotation axes, parameters clamped to [0, 1]) until no
+    /// parameter moves more than 2e-3 (0.2° at a joint) or after <see cref="MaxIterations"/>. Every frame starts
+    /// from the grip solved once, at construction, for the nominal hold (from the best point of a coarse grid),
+    /// not from the last frame, so the result depends on the controller's pose, not on the frame rate.
+    /// No allocation per frame.
     /// </remarks>
     public sealed class FingerSolver
     {
