@@ -26,7 +26,8 @@ public sealed class FingersCommand : ICommand
         surface (mm), the median and largest fingertip gap (mm), iterations and microseconds per frame
         for both hands, bytes allocated per frame, and the largest difference in the final joint
         parameters t between the three frame rates. Fingertip gaps are of the four fingers; the thumb
-        tip's gap is reported apart (thumb_gap_median_mm), with how far (median) the thumb's and the
+        tip's gap is reported apart (thumb_gap_median_mm; with --json every fingertip's median and
+        largest gap too, thumb first: tip_gap_median_mm_by_finger, tip_gap_max_mm_by_finger), with how far (median) the thumb's and the
         index's pads are from resting on the profile's thumb rest and trigger (FingerSolver.GoalDistance).
           --profile NAME   only this profile (file name without .json)
           --hand WHICH     only this hand: "reference", or a BVH file of a rig with finger bones
@@ -86,6 +87,8 @@ public sealed class FingersCommand : ICommand
         long bytes = 0;
         int frames = 0, iterations = 0;
         var gaps = new List<double>();
+        var byFinger = new List<double>[5];
+        for (int f = 0; f < 5; f++) byFinger[f] = new List<double>();
         var thumbGaps = new List<double>();
         var thumbToRest = new List<double>();
         var indexToTrigger = new List<double>();
@@ -107,6 +110,7 @@ public sealed class FingersCommand : ICommand
                 {
                     if (!hand.Has(f)) continue;
                     for (int p = 0; p < 3; p++) penetration = Math.Max(penetration, -solver.SurfaceGap(f, p));
+                    byFinger[f].Add(solver.SurfaceGap(f, 2) * 1000.0);
                     if (f > 0) gaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
                     else thumbGaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
                 }
@@ -116,6 +120,7 @@ public sealed class FingersCommand : ICommand
             finals[r] = solver.T.ToArray();
         }
         gaps.Sort();
+        foreach (var list in byFinger) list.Sort();
         thumbGaps.Sort();
         thumbToRest.Sort();
         indexToTrigger.Sort();
@@ -146,6 +151,9 @@ public sealed class FingersCommand : ICommand
             ["max_penetration_mm"] = penetration * 1000.0,
             ["tip_gap_median_mm"] = gaps[gaps.Count / 2],
             ["tip_gap_max_mm"] = gaps[^1],
+            // Per fingertip, thumb first (null for a finger the rig does not have).
+            ["tip_gap_median_mm_by_finger"] = byFinger.Select(l => l.Count > 0 ? l[l.Count / 2] : (double?)null).ToArray(),
+            ["tip_gap_max_mm_by_finger"] = byFinger.Select(l => l.Count > 0 ? l[^1] : (double?)null).ToArray(),
             ["thumb_gap_median_mm"] = thumbGaps.Count > 0 ? thumbGaps[thumbGaps.Count / 2] : (object)null,
             ["thumb_to_rest_median_mm"] = thumbToRest.Count > 0 ? thumbToRest[thumbToRest.Count / 2] : (object)null,
             ["index_to_trigger_median_mm"] = indexToTrigger[indexToTrigger.Count / 2],

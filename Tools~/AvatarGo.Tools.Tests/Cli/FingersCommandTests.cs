@@ -23,6 +23,10 @@ public class FingersCommandTests
             Assert.That(row.GetProperty("tip_gap_median_mm").GetDouble(), Is.LessThanOrEqualTo(3.0), what);
             Assert.That(row.GetProperty("thumb_gap_median_mm").GetDouble(), Is.LessThanOrEqualTo(3.0), what);
             Assert.That(row.GetProperty("max_penetration_mm").GetDouble(), Is.LessThanOrEqualTo(1.0), what);
+            var medians = row.GetProperty("tip_gap_median_mm_by_finger");
+            Assert.That(medians.GetArrayLength(), Is.EqualTo(5), what);
+            foreach (var m in medians.EnumerateArray()) Assert.That(m.GetDouble(), Is.LessThanOrEqualTo(3.0), what + ": every fingertip");
+            Assert.That(medians[0].GetDouble(), Is.EqualTo(row.GetProperty("thumb_gap_median_mm").GetDouble()), what + ": thumb first");
         }
         Assert.That(rows, Is.EqualTo(6), "three profiles, two hands");
     }
