@@ -7,8 +7,8 @@ namespace AvatarGo.Core.Tests
     /// The whole pipeline on real motion: mocap → synthetic session (random mounting, 1 mm / 0.1° noise) →
     /// T-pose identification, scaling, walk-in exact offsets → body solve and IK → compared with the true joints.
     /// Targets are the issue's: end effectors median ≤ 5 mm and p95 ≤ 15 mm, MPJPE ≤ 20 mm, fixed offsets at least
-    /// three times worse. Measured with seed 1 (2026-11-22): mocapbank 2.2 / 4.0 / 15.9 mm, fixed 93 mm;
-    /// mixamo 2.2 / 4.2 / 10.7 mm; rigify 2.2 / 4.1 / 21.5 mm.
+    /// three times worse. Measured with seed 1 (2026-11-22, the neck following the head halfway): mocapbank
+    /// 2.2 / 3.9 / 14.7 mm, fixed 93 mm; mixamo 2.2 / 4.2 / 11.1 mm; rigify 2.2 / 4.1 / 19.9 mm.
     /// </summary>
     public class PipelineTests
     {
@@ -56,10 +56,10 @@ namespace AvatarGo.Core.Tests
         public void RigifyLongClipFollows()
         {
             var (exact, fixedOffsets) = Run("rigify_6channel_24fps.bvh", 3);
-            // MPJPE bound 25 mm, not the 20: measured 21.5 mm (seed 1), from the elbows and knees (44 mm
-            // median) and the chest, which the six devices do not observe, and thighs that slide ±1 cm in this
-            // clip's data; the end effectors meet their targets.
-            AssertFollows(exact, fixedOffsets, 25.0);
+            // The MPJPE bound, 20 mm, with the least margin of the three clips (this seed: 19.3 mm; 20.8 mm
+            // before the neck followed the head): the elbows and knees (43 mm median) and the chest, which the six
+            // devices do not observe, and thighs that slide ±1 cm in this clip's data.
+            AssertFollows(exact, fixedOffsets, 20.0);
         }
 
         [Test]
