@@ -142,13 +142,14 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// A finger point after the last solve, in the controller's frame (the frame of the profile's trigger and
-        /// thumb rest): point 0 intermediate joint, 1 distal joint, 2 fingertip.
+        /// thumb rest): point 0 intermediate joint, 1 distal joint, 2 fingertip. NaN for a finger the rig does not have.
         /// </summary>
         /// <exception cref="ArgumentOutOfRangeException">The finger is not 0–4 or the point not 0–2.</exception>
         public Vector3 PointInController(int finger, int point)
         {
             if ((uint)finger > 4) throw new ArgumentOutOfRangeException(nameof(finger), finger, "Fingers are 0 (thumb) to 4 (little).");
             if ((uint)point > 2) throw new ArgumentOutOfRangeException(nameof(point), point, "Points are 0 (intermediate joint), 1 (distal joint) and 2 (fingertip).");
+            if (!_hand.HasFinger[finger]) return new Vector3(float.NaN);
             int o = finger * 3;
             Chain(finger, new Vector4(_t[o], _t[o + 1], _t[o + 2], finger == 0 ? _t[HandModel.ThumbSpread] : 0f), out _, out Pose w1, out Pose w2);
             return point == 0 ? w1.Position : point == 1 ? w2.Position : w2.TransformPoint(_hand.TipLocal[finger]);

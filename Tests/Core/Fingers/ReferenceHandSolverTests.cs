@@ -194,6 +194,33 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void AHandWithoutAThumbHoldsWithItsFingersAndReportsNoThumb()
+        {
+            HumanoidMap full = ReferenceHandRig.Build();
+            var bones = new List<KeyValuePair<HumanBone, string>>();
+            foreach (HumanBone b in Enum.GetValues(typeof(HumanBone)))
+            {
+                bool thumb = false;
+                foreach (bool side in new[] { true, false })
+                    for (int k = 0; k < 3; k++) thumb |= b == HumanBones.Finger(side, 0, k);
+                if (!thumb && full.Has(b)) bones.Add(new KeyValuePair<HumanBone, string>(b, full.NameOf(b)));
+            }
+            var map = new HumanoidMap(full.Skeleton, bones);
+            foreach (ControllerProfile profile in Profiles())
+            {
+                var model = new HandModel(map, false);
+                Assert.That(model.Has(0), Is.False);
+                var solver = new FingerSolver(model, profile);
+                solver.Solve(Pose.Identity, model.ControllerInHand(profile), GripMode.Hold);
+                Assert.That(float.IsNaN(solver.PointInController(0, 2).X), Is.True, profile.Name + ": no thumb, no thumb point");
+                Assert.That(float.IsNaN(solver.GoalDistance(0)), Is.True, profile.Name + ": no thumb, no thumb distance");
+                Assert.That(solver.T[0] + solver.T[1] + solver.T[2] + solver.T[HandModel.ThumbSpread], Is.EqualTo(0f), profile.Name + ": the missing thumb stays at rest");
+                for (int f = 1; f < 5; f++)
+                    Assert.That(Math.Abs(solver.SurfaceGap(f, 2)), Is.LessThanOrEqualTo(0.003f), $"{profile.Name}: fingertip {f} on the surface");
+            }
+        }
+
+        [Test]
         public void SameGripAt72_90And144HzAndOpenWithoutOscillationOutOfReach()
         {
             HumanoidMap map = ReferenceHandRig.Build(1f, -Vector3.UnitX, 3, Quaternion.Identity);
