@@ -7,10 +7,12 @@ namespace AvatarGo.Core
     /// Closes the fingers of one hand on a controller by minimising, per finger, the paper's cost: the sum over the
     /// finger's moving points (intermediate and distal joints, fingertip) of their distance to the controller's
     /// surface, negative distances (penetration) multiplied by <see cref="Penalty"/> before taking the absolute value
-    /// — plus the thumb tip toward the thumb rest and the index tip toward the trigger, and a small term keeping a
-    /// finger's three joints curling together. The thumb arches over the controller to its rest, so only its tip is
-    /// drawn to the surface; its joints are only kept out of it. Distances are measured from the finger's surface (joint centre minus
-    /// <see cref="HandModel.FingerRadius"/>), so contact means skin on plastic, not bone.
+    /// — plus the thumb tip toward the thumb rest and the index tip toward the trigger (each goal lifted one finger
+    /// radius off the surface, where the fingertip's centre is when its pad touches it), and a small term keeping a
+    /// finger's joints curling together (a finger's three, the thumb's outer two). The thumb arches over the
+    /// controller to its rest, so only its tip is drawn to the surface; its joints are only kept out of it. Distances
+    /// are measured from the finger's surface (joint centre minus <see cref="HandModel.FingerRadius"/>), so contact
+    /// means skin on plastic, not bone.
     /// </summary>
     /// <remarks>
     /// Each frame runs projected gradient descent to convergence (Polyak step size with backtracking, analytic
@@ -118,20 +120,22 @@ namespace AvatarGo.Core
                 float blend = mode != GripMode.InputDriven ? 1f : f == 1 ? v : g;
                 for (int k = 0; k < 3; k++) _t[f * 3 + k] = _solved[f * 3 + k] * blend;
             }
-            _t[HandModel.ThumbSpread] = _solved[HandModel.ThumbSpread] * (mode != GripMode.InputDriven ? 1f : g);
+            _t[HandModel.ThumbSpreadIndex] = _solved[HandModel.ThumbSpreadIndex] * (mode != GripMode.InputDriven ? 1f : g);
         }
 
         /// <summary>
         /// The signed distance (m) from the controller's surface to the skin at a finger point after the last solve:
-        /// point 0 intermediate joint, 1 distal joint, 2 fingertip. Negative: penetration.
+        /// point 0 intermediate joint, 1 distal joint, 2 fingertip. Negative: penetration. NaN for a finger the rig does
+        /// not have (check <see cref="HandModel.Has"/>).
         /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">The finger is not 0–4 or the point not 0–2.</exception>
         public float SurfaceGap(int finger, int point) => _profile.Shape.Distance(PointInController(finger, point)) - _hand.FingerRadius;
 
         /// <summary>
         /// How far (m) the fingertip of the thumb (<paramref name="finger"/> 0) or the index (1) is, after the last solve,
         /// from resting on the thumb rest or the trigger: the distance from the fingertip's centre to its goal, the
         /// profile's point lifted one finger radius off the surface (where the fingertip's centre is when its pad
-        /// touches the point).
+        /// touches the point). NaN when the rig has no such finger.
         /// </summary>
         /// <exception cref="ArgumentOutOfRangeException">Not the thumb or the index.</exception>
         public float GoalDistance(int finger)
@@ -151,7 +155,7 @@ namespace AvatarGo.Core
             if ((uint)point > 2) throw new ArgumentOutOfRangeException(nameof(point), point, "Points are 0 (intermediate joint), 1 (distal joint) and 2 (fingertip).");
             if (!_hand.HasFinger[finger]) return new Vector3(float.NaN);
             int o = finger * 3;
-            Chain(finger, new Vector4(_t[o], _t[o + 1], _t[o + 2], finger == 0 ? _t[HandModel.ThumbSpread] : 0f), out _, out Pose w1, out Pose w2);
+            Chain(finger, new Vector4(_t[o], _t[o + 1], _t[o + 2], finger == 0 ? _t[HandModel.ThumbSpreadIndex] : 0f), out _, out Pose w1, out Pose w2);
             return point == 0 ? w1.Position : point == 1 ? w2.Position : w2.TransformPoint(_hand.TipLocal[finger]);
         }
 
@@ -174,7 +178,7 @@ namespace AvatarGo.Core
                             if (cost < best) { best = cost; bestT = t; }
                         }
             _start[f * 3] = bestT.X; _start[f * 3 + 1] = bestT.Y; _start[f * 3 + 2] = bestT.Z;
-            if (thumb) _start[HandModel.ThumbSpread] = bestT.W;
+            if (thumb) _start[HandModel.ThumbSpreadIndex] = bestT.W;
         }
 
         private int SolveFinger(int f)
@@ -185,7 +189,7 @@ namespace AvatarGo.Core
             // long finger already wrapped past a thin handle) a warm start settles wherever it came from, which made
             // the grip depend on the frame rate by up to 0.035 in t. This way the grip is a function of this frame's
             // controller pose alone. Parameters: x, y, z the three joints; w the thumb's spread (0 for a finger).
-            var t = new Vector4(_start[o], _start[o + 1], _start[o + 2], thumb ? _start[HandModel.ThumbSpread] : 0f);
+            var t = new Vector4(_start[o], _start[o + 1], _start[o + 2], thumb ? _start[HandModel.ThumbSpreadIndex] : 0f);
             float cost = Cost(f, t, out Vector4 grad);
             int iterations = 0;
             float lastStep = float.MaxValue;
@@ -214,7 +218,7 @@ namespace AvatarGo.Core
                 if (moved < 2e-3f) { iterations++; break; }
             }
             _solved[o] = t.X; _solved[o + 1] = t.Y; _solved[o + 2] = t.Z;
-            if (thumb) _solved[HandModel.ThumbSpread] = t.W;
+            if (thumb) _solved[HandModel.ThumbSpreadIndex] = t.W;
             return iterations;
         }
 
@@ -297,6 +301,5 @@ namespace AvatarGo.Core
             return p + normal * (_hand.FingerRadius - d);
         }
 
-        private static float Clamp01(float v) => v < 0f ? 0f : v > 1f ? 1f : v;
     }
 }

@@ -7,12 +7,12 @@ namespace AvatarGo.Core
     /// One hand of an avatar for finger IK: per finger (thumb, index, middle, ring, little) its three joints, their
     /// open rotations (the rig's rest pose) and closed rotations, and a fingertip point. Each joint closes about an
     /// axis found from the hand's geometry, so any rig works whatever local axis its bones bend about: a finger bends
-    /// about the palm normal crossed with the finger's direction; the thumb's two outer joints bend toward the little
+    /// about the finger's direction crossed with the palm normal; the thumb's two outer joints bend toward the little
     /// finger's base (the thumb's own flexion, which curls it across the palm); and the thumb's first joint has two
     /// parameters, like Unity's humanoid muscles (Thumb 1 Stretched and Thumb Spread): it turns toward the palm normal
     /// and, separately, lifts the thumb radially (toward the thumb side, over the top of a controller).
     /// Joint <c>j</c> of finger <c>f</c> has a parameter <c>t</c> in [0, 1] blending its open rotation to its closed one
-    /// (the paper's <c>t_f^j</c>), stored at <c>f * 3 + j</c>; the thumb's spread is parameter <see cref="ThumbSpread"/>.
+    /// (the paper's <c>t_f^j</c>), stored at <c>f * 3 + j</c>; the thumb's spread is parameter <see cref="ThumbSpreadIndex"/>.
     /// </summary>
     public sealed class HandModel
     {
@@ -20,7 +20,7 @@ namespace AvatarGo.Core
         public const int ParameterCount = 16;
 
         /// <summary>The index of the thumb's second parameter at its first joint (radial spread), after the 15 joint parameters.</summary>
-        public const int ThumbSpread = 15;
+        public const int ThumbSpreadIndex = 15;
 
         /// <summary>How far the thumb's first joint spreads (lifts radially) at a spread parameter of 1, in degrees.</summary>
         public const float ThumbSpreadDegrees = 60f;
@@ -51,7 +51,8 @@ namespace AvatarGo.Core
         internal float ThumbSpreadRadians;
 
         /// <summary>Builds the model of the left or right hand of <paramref name="map"/>'s rig from its rest pose.</summary>
-        /// <exception cref="ArgumentException">The rig has no hand bone or no complete finger on that side.</exception>
+        /// <exception cref="ArgumentException">The rig has no hand bone on that side, no index, middle or little finger base, or
+        /// no complete index or middle finger.</exception>
         public HandModel(HumanoidMap map, bool left)
         {
             if (map == null) throw new ArgumentNullException(nameof(map));
@@ -109,7 +110,10 @@ namespace AvatarGo.Core
                 if (f == 0)
                 {
                     // Spread: turns the thumb toward the radial side (little-to-index, continued past the index).
-                    Vector3 spread = Vectors.NormalizeOr(Vector3.Cross(direction, across), Vector3.Cross(direction, palm));
+                    // A thumb laid along little-to-index (no rig seen does this) has no radial direction to lift
+                    // toward: it then spreads in the palm's plane, about the palm normal.
+                    Vector3 radial = Vector3.Cross(direction, across);
+                    Vector3 spread = radial.LengthSquared() > 0.01f ? Vector3.Normalize(radial) : palm;
                     ThumbSpreadAxisLocal = Vector3.Transform(spread, Quaternion.Conjugate(world[j0].Rotation));
                     ThumbSpreadRadians = ThumbSpreadDegrees * Rotations.Deg2Rad;
                 }
@@ -182,7 +186,7 @@ namespace AvatarGo.Core
                 {
                     int j = Joints[f, k];
                     Pose rest = pose.Skeleton.GetRestLocal(j);
-                    pose.Local[j] = new Pose(rest.Position, Quaternion.Normalize(rest.Rotation * Bend(f, k, t[f * 3 + k], f == 0 && k == 0 ? t[ThumbSpread] : 0f)));
+                    pose.Local[j] = new Pose(rest.Position, Quaternion.Normalize(rest.Rotation * Bend(f, k, t[f * 3 + k], f == 0 && k == 0 ? t[ThumbSpreadIndex] : 0f)));
                 }
             }
         }

@@ -69,7 +69,7 @@ namespace AvatarGo.Core.Tests
 
                     // Spreading alone lifts the thumb radially: away from the little finger, along little-to-index.
                     var spreadOnly = new float[HandModel.ParameterCount];
-                    spreadOnly[HandModel.ThumbSpread] = 0.5f;
+                    spreadOnly[HandModel.ThumbSpreadIndex] = 0.5f;
                     pose.ResetToRest();
                     model.Apply(spreadOnly, pose);
                     s.ComputeWorld(pose.Local, world);
@@ -194,6 +194,53 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void TheAppliedPoseIsTheSolvedOneAndTheHandsAreMirrorImages()
+        {
+            HumanoidMap map = ReferenceHandRig.Build(1f, Vector3.Normalize(new Vector3(1, 2, -3)), 13, Rotations.AngleAxis(20f, Vector3.UnitY));
+            Skeleton s = map.Skeleton;
+            foreach (ControllerProfile profile in Profiles())
+            {
+                var t = new float[2][];
+                foreach (bool left in new[] { true, false })
+                {
+                    var model = new HandModel(map, left);
+                    var solver = new FingerSolver(model, profile);
+                    var hand = new Pose(new Vector3(0.2f, 1.1f, 0.4f), Rotations.AngleAxis(-35f, new Vector3(1, 0, 1)));
+                    Pose controller = hand * model.ControllerInHand(profile);
+                    solver.Solve(hand, controller, GripMode.Hold);
+                    t[left ? 0 : 1] = solver.T.ToArray();
+                    // What the avatar shows (Apply, then forward kinematics) is what the solver measured.
+                    var pose = new SkeletonPose(s);
+                    pose.ResetToRest();
+                    pose.Local[model.HandJoint] = hand.RelativeTo(s.GetParent(model.HandJoint) < 0 ? Pose.Identity : RestWorld(s)[s.GetParent(model.HandJoint)]);
+                    model.Apply(solver.T, pose);
+                    var world = new Pose[s.JointCount];
+                    s.ComputeWorld(pose.Local, world);
+                    for (int f = 0; f < 5; f++)
+                        for (int k = 1; k < 3; k++)
+                        {
+                            Vector3 shown = controller.InverseTransformPoint(world[map[HumanBones.Finger(left, f, k)]].Position);
+                            Assert.That(Vector3.Distance(shown, solver.PointInController(f, k - 1)), Is.LessThan(1e-5f), $"{profile.Name} {(left ? "left" : "right")} finger {f} joint {k}");
+                        }
+                    int tip = map[HumanBones.Finger(left, 0, 2)] + 1;
+                    Assert.That(Vector3.Distance(controller.InverseTransformPoint(world[tip].Position), solver.PointInController(0, 2)), Is.LessThan(1e-5f), profile.Name + ": thumb tip");
+                }
+                // The profiles are symmetric about their x = 0 plane and the hands are mirror images: same grip.
+                for (int i = 0; i < HandModel.ParameterCount; i++)
+                    Assert.That(t[0][i], Is.EqualTo(t[1][i]).Within(0.005f), $"{profile.Name}: parameter {i}, left against right");
+            }
+        }
+
+        private static Pose[] RestWorld(Skeleton s)
+        {
+            var rest = new Pose[s.JointCount];
+            s.GetRestLocal(rest);
+            var world = new Pose[s.JointCount];
+            s.ComputeWorld(rest, world);
+            return world;
+        }
+
+        [Test]
         public void AHandWithoutAThumbHoldsWithItsFingersAndReportsNoThumb()
         {
             HumanoidMap full = ReferenceHandRig.Build();
@@ -214,7 +261,7 @@ namespace AvatarGo.Core.Tests
                 solver.Solve(Pose.Identity, model.ControllerInHand(profile), GripMode.Hold);
                 Assert.That(float.IsNaN(solver.PointInController(0, 2).X), Is.True, profile.Name + ": no thumb, no thumb point");
                 Assert.That(float.IsNaN(solver.GoalDistance(0)), Is.True, profile.Name + ": no thumb, no thumb distance");
-                Assert.That(solver.T[0] + solver.T[1] + solver.T[2] + solver.T[HandModel.ThumbSpread], Is.EqualTo(0f), profile.Name + ": the missing thumb stays at rest");
+                Assert.That(solver.T[0] + solver.T[1] + solver.T[2] + solver.T[HandModel.ThumbSpreadIndex], Is.EqualTo(0f), profile.Name + ": the missing thumb stays at rest");
                 for (int f = 1; f < 5; f++)
                     Assert.That(Math.Abs(solver.SurfaceGap(f, 2)), Is.LessThanOrEqualTo(0.003f), $"{profile.Name}: fingertip {f} on the surface");
             }

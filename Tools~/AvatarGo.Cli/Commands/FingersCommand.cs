@@ -110,7 +110,7 @@ public sealed class FingersCommand : ICommand
                 {
                     if (!hand.Has(f)) continue;
                     for (int p = 0; p < 3; p++) penetration = Math.Max(penetration, -solver.SurfaceGap(f, p));
-                    byFinger[f].Add(solver.SurfaceGap(f, 2) * 1000.0);
+                    byFinger[f].Add(Math.Abs(solver.SurfaceGap(f, 2)) * 1000.0); // a tip inside the surface is off it too
                     if (f > 0) gaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
                     else thumbGaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
                 }

@@ -1,3 +1,4 @@
+using System;
 using System.Text.Json;
 using NUnit.Framework;
 
@@ -26,7 +27,12 @@ public class FingersCommandTests
             var medians = row.GetProperty("tip_gap_median_mm_by_finger");
             Assert.That(medians.GetArrayLength(), Is.EqualTo(5), what);
             foreach (var m in medians.EnumerateArray()) Assert.That(m.GetDouble(), Is.LessThanOrEqualTo(3.0), what + ": every fingertip");
-            Assert.That(medians[0].GetDouble(), Is.EqualTo(row.GetProperty("thumb_gap_median_mm").GetDouble()), what + ": thumb first");
+            // Thumb first (thumb_gap_median_mm is signed, the per-finger figures are distances).
+            Assert.That(medians[0].GetDouble(), Is.EqualTo(Math.Abs(row.GetProperty("thumb_gap_median_mm").GetDouble())).Within(0.05), what + ": thumb first");
+            // The thumb's pad lies on the controller's head, within 25 mm of the thumb rest (the heads' top faces are
+            // 40-52 mm deep); the index's pad is on the trigger's side, within 30 mm of the trigger.
+            Assert.That(row.GetProperty("thumb_to_rest_median_mm").GetDouble(), Is.LessThanOrEqualTo(25.0), what);
+            Assert.That(row.GetProperty("index_to_trigger_median_mm").GetDouble(), Is.LessThanOrEqualTo(30.0), what);
         }
         Assert.That(rows, Is.EqualTo(6), "three profiles, two hands");
     }
