@@ -47,11 +47,17 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void TheValidOneReads()
         {
-            using var r = new SessionReader(new StringReader(string.Join("\n", ValidLines())), "ok");
+            Assert.That(CountFrames(ValidLines(), "ok"), Is.EqualTo(5));
+        }
+
+        // Reads a whole session from its lines and returns how many frames it has.
+        private static int CountFrames(List<string> lines, string name)
+        {
+            using var r = new SessionReader(new StringReader(string.Join("\n", lines)), name);
             var f = r.CreateFrame();
             int n = 0;
             while (r.ReadFrame(f)) n++;
-            Assert.That(n, Is.EqualTo(5));
+            return n;
         }
 
         [Test]
@@ -196,11 +202,7 @@ namespace AvatarGo.Core.Tests
             l.Insert(IndexOf(l, "end-header"), "colour 0 red");
             int i = IndexOf(l, "pose 1", 2);
             l.Insert(i + 1, "haptics 1 0.5 0.1");
-            using var r = new SessionReader(new StringReader(string.Join("\n", l)), "newer");
-            var f = r.CreateFrame();
-            int n = 0;
-            while (r.ReadFrame(f)) n++;
-            Assert.That(n, Is.EqualTo(5));
+            Assert.That(CountFrames(l, "newer"), Is.EqualTo(5));
         }
 
         [Test]
