@@ -48,6 +48,7 @@ namespace AvatarGo.Core
         private readonly Vector3[] _pointGradients = new Vector3[3];
         private Pose _handInController;
         private readonly Pose[] _fingerBase = new Pose[5];
+        private Vector3 _thumbSpreadAxis;   // this frame's, in the controller frame, scaled by the full spread angle
         private readonly Vector3 _thumbGoal, _indexGoal;
 
         /// <summary>Creates a solver for one hand and one controller.</summary>
@@ -62,8 +63,7 @@ namespace AvatarGo.Core
             // minima: a thumb whose tip touches the side of the controller's head stays there). Near every frame's
             // answer, and the same whatever the frame rate.
             Pose held = hand.ControllerInHand(profile);
-            _handInController = held.Inverse();
-            for (int f = 0; f < 5; f++) _fingerBase[f] = _handInController * _hand.RestRelative[f, 0];
+            PlaceHand(held.Inverse());
             for (int f = 0; f < 5; f++)
                 if (_hand.HasFinger[f]) GridStart(f);
             Solve(Pose.Identity, held, GripMode.Hold);
@@ -92,8 +92,7 @@ namespace AvatarGo.Core
         {
             LastIterations = 0;
             if (!handWorld.IsValid || !controllerWorld.IsValid) return; // keep the last good grip
-            _handInController = handWorld.RelativeTo(controllerWorld);
-            for (int f = 0; f < 5; f++) _fingerBase[f] = _handInController * _hand.RestRelative[f, 0];
+            PlaceHand(handWorld.RelativeTo(controllerWorld));
             Vector3 palm = _handInController.TransformPoint(_hand.PalmCentreInHand);
             OutOfReach = _profile.Shape.Distance(palm) > ReachDistance;
             if (mode == GripMode.Open || OutOfReach)
@@ -181,6 +180,15 @@ namespace AvatarGo.Core
             if (thumb) _start[HandModel.ThumbSpreadIndex] = bestT.W;
         }
 
+        // What stays fixed through a frame's descent: the hand in the controller frame, each finger's base, and the
+        // thumb's spread axis.
+        private void PlaceHand(Pose handInController)
+        {
+            _handInController = handInController;
+            for (int f = 0; f < 5; f++) _fingerBase[f] = handInController * _hand.RestRelative[f, 0];
+            _thumbSpreadAxis = Vector3.Transform(_hand.ThumbSpreadAxisLocal, _fingerBase[0].Rotation) * _hand.ThumbSpreadRadians;
+        }
+
         private int SolveFinger(int f)
         {
             int o = f * 3;
@@ -264,7 +272,7 @@ namespace AvatarGo.Core
             if (thumb)
             {
                 // The spread axis is fixed in the thumb base's rest frame (the spread turns before the flexion).
-                Vector3 a3 = Vector3.Transform(_hand.ThumbSpreadAxisLocal, _fingerBase[0].Rotation) * _hand.ThumbSpreadRadians;
+                Vector3 a3 = _thumbSpreadAxis;
                 gs = Vector3.Dot(_pointGradients[0], Vector3.Cross(a3, _points[0] - w0.Position))
                    + Vector3.Dot(_pointGradients[1], Vector3.Cross(a3, _points[1] - w0.Position))
                    + Vector3.Dot(tipGradient, Vector3.Cross(a3, _points[2] - w0.Position));
