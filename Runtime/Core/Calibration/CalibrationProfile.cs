@@ -16,9 +16,9 @@ namespace AvatarGo.Core
         private const int RoleSlots = 7;
         private readonly int[] _deviceIds = new int[RoleSlots];
         private readonly string[] _serials = new string[RoleSlots];
-        private readonly Pose[] _deviceAtCalibration = new Pose[RoleSlots];
-        private readonly Pose[] _jointAtCalibration = new Pose[RoleSlots];
-        private readonly Pose[] _jointInDevice = new Pose[RoleSlots];
+        private readonly RigidPose[] _deviceAtCalibration = new RigidPose[RoleSlots];
+        private readonly RigidPose[] _jointAtCalibration = new RigidPose[RoleSlots];
+        private readonly RigidPose[] _jointInDevice = new RigidPose[RoleSlots];
 
         /// <summary>The current format version of persisted profiles.</summary>
         public const int Version = 1;
@@ -30,7 +30,7 @@ namespace AvatarGo.Core
             {
                 _deviceIds[i] = -1;
                 _serials[i] = string.Empty;
-                _deviceAtCalibration[i] = _jointAtCalibration[i] = _jointInDevice[i] = Pose.Identity;
+                _deviceAtCalibration[i] = _jointAtCalibration[i] = _jointInDevice[i] = RigidPose.Identity;
             }
         }
 
@@ -50,7 +50,7 @@ namespace AvatarGo.Core
         public float FloorHeight { get; internal set; }
 
         /// <summary>Where the avatar was shown: a floor point and a yaw (the wearer's facing at the T-pose).</summary>
-        public Pose Placement { get; internal set; } = Pose.Identity;
+        public RigidPose Placement { get; internal set; } = RigidPose.Identity;
 
         /// <summary><c>w0</c>: the vector from the pelvis tracker to the HMD at the walk-in (paper, eq. 1).</summary>
         public Vector3 RootToHead { get; internal set; }
@@ -62,16 +62,16 @@ namespace AvatarGo.Core
         public string Serial(DeviceRole role) => _serials[(int)role];
 
         /// <summary><c>p0(T), R0(T)</c>: the device's pose at the walk-in.</summary>
-        public Pose DeviceAtCalibration(DeviceRole role) => _deviceAtCalibration[(int)role];
+        public RigidPose DeviceAtCalibration(DeviceRole role) => _deviceAtCalibration[(int)role];
 
         /// <summary><c>p0(J), R0(J)</c>: the avatar joint's world pose at the walk-in.</summary>
-        public Pose JointAtCalibration(DeviceRole role) => _jointAtCalibration[(int)role];
+        public RigidPose JointAtCalibration(DeviceRole role) => _jointAtCalibration[(int)role];
 
         /// <summary>
         /// The joint's pose in the device frame: (<c>R0(T)^-1 v0(TJ)</c>, <c>R0(T)^-1 R0(J)</c>). The joint's world pose
         /// each frame is <c>devicePose * JointInDevice(role)</c>.
         /// </summary>
-        public Pose JointInDevice(DeviceRole role) => _jointInDevice[(int)role];
+        public RigidPose JointInDevice(DeviceRole role) => _jointInDevice[(int)role];
 
         internal void SetDevice(DeviceRole role, DeviceInfo device)
         {
@@ -79,7 +79,7 @@ namespace AvatarGo.Core
             _serials[(int)role] = device.Serial;
         }
 
-        internal void SetOffsets(DeviceRole role, Pose device, Pose joint)
+        internal void SetOffsets(DeviceRole role, RigidPose device, RigidPose joint)
         {
             _deviceAtCalibration[(int)role] = device;
             _jointAtCalibration[(int)role] = joint;
@@ -100,8 +100,8 @@ namespace AvatarGo.Core
             Vector3 origin = Placement.Position;
             foreach (DeviceRole role in BodyRoles.All)
             {
-                Pose joint = _jointAtCalibration[(int)role];
-                var moved = new Pose(origin + (joint.Position - origin) * ratio, joint.Rotation);
+                RigidPose joint = _jointAtCalibration[(int)role];
+                var moved = new RigidPose(origin + (joint.Position - origin) * ratio, joint.Rotation);
                 p.SetOffsets(role, _deviceAtCalibration[(int)role], moved);
             }
             if (Mode == OffsetMode.Fixed) return p.WithFixedOffsets();
@@ -155,7 +155,7 @@ namespace AvatarGo.Core
                 Vector3 position = role == DeviceRole.Head ? FixedHeadOffset
                     : role == DeviceRole.LeftHand || role == DeviceRole.RightHand ? FixedWristOffset
                     : Vector3.Zero;
-                p._jointInDevice[(int)role] = new Pose(position, _jointInDevice[(int)role].Rotation);
+                p._jointInDevice[(int)role] = new RigidPose(position, _jointInDevice[(int)role].Rotation);
             }
             return p;
         }

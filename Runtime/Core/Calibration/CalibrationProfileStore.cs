@@ -132,7 +132,7 @@ namespace AvatarGo.Core
             }
         }
 
-        private static void WritePose(JsonWriter w, Pose p)
+        private static void WritePose(JsonWriter w, RigidPose p)
         {
             w.BeginObject();
             w.Name("position").Values(p.Position.X, p.Position.Y, p.Position.Z);
@@ -140,15 +140,15 @@ namespace AvatarGo.Core
             w.EndObject();
         }
 
-        private static Pose ReadPose(JsonNode node, string what)
+        private static RigidPose ReadPose(JsonNode node, string what)
         {
             if (node == null || node.Kind != JsonKind.Object) throw new FormatException($"'{what}' must be an object with position and rotation.");
             Vector3 position = ReadVector(node, "position");
             double[] q = node.GetNumbers("rotation", 4);
             var rotation = new Quaternion((float)q[0], (float)q[1], (float)q[2], (float)q[3]);
-            var pose = new Pose(position, rotation);
+            var pose = new RigidPose(position, rotation);
             if (!pose.IsValid) throw new FormatException($"'{what}' is not a valid pose (finite position, unit quaternion).");
-            return new Pose(position, Quaternion.Normalize(rotation));
+            return new RigidPose(position, Quaternion.Normalize(rotation));
         }
 
         private static Vector3 ReadVector(JsonNode node, string name) => node.GetVector3(name);

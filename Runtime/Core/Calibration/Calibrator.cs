@@ -18,7 +18,7 @@ namespace AvatarGo.Core
         private readonly HumanoidMap _avatar;
         private readonly CalibrationSettings _settings;
         private readonly double[] _times = new double[Capacity];
-        private readonly Pose[,] _history;
+        private readonly RigidPose[,] _history;
         private readonly bool[,] _tracked;
         private int _head, _count;
         private readonly int[] _deviceByRole = new int[7];
@@ -35,7 +35,7 @@ namespace AvatarGo.Core
             var missing = avatar.MissingRequired();
             if (missing.Count > 0) throw new ArgumentException($"The avatar lacks required bones: {string.Join(", ", missing)}.", nameof(avatar));
             _settings = settings ?? new CalibrationSettings();
-            _history = new Pose[_devices.Length, Capacity];
+            _history = new RigidPose[_devices.Length, Capacity];
             _tracked = new bool[_devices.Length, Capacity];
             ResetRoles();
         }
@@ -106,7 +106,7 @@ namespace AvatarGo.Core
         /// Feeds one frame: the samples of every device (in constructor order) and this frame's events.
         /// A trigger press on any controller runs the current step.
         /// </summary>
-        public void Update(double time, ReadOnlySpan<DeviceSample> samples, IReadOnlyList<InputEvent> events)
+        public void Update(double time, ReadOnlySpan<DeviceSample> samples, IReadOnlyList<DeviceEvent> events)
         {
             if (samples.Length != _devices.Length) throw new ArgumentException($"Expected {_devices.Length} samples, got {samples.Length}.", nameof(samples));
             _head = (_head + 1) % Capacity;
@@ -114,13 +114,13 @@ namespace AvatarGo.Core
             for (int d = 0; d < _devices.Length; d++)
             {
                 _tracked[d, _head] = samples[d].IsUsable;
-                _history[d, _head] = samples[d].IsUsable ? samples[d].Pose : Pose.Identity;
+                _history[d, _head] = samples[d].IsUsable ? samples[d].Pose : RigidPose.Identity;
             }
             if (_count < Capacity) _count++;
             if (events == null) return;
             for (int e = 0; e < events.Count; e++)
             {
-                if (events[e].Kind != InputEventKind.TriggerPressed) continue;
+                if (events[e].Kind != DeviceEventKind.TriggerPressed) continue;
                 if (State == CalibrationState.WaitingForTPose) Identify(time);
                 else if (State == CalibrationState.WalkIn) ComputeOffsets(time);
             }
@@ -140,7 +140,7 @@ namespace AvatarGo.Core
 
         // ---- Averaging over the window -------------------------------------------------------------------
 
-        private bool TryAverage(int device, double now, out Pose mean, out bool still, out int trackedFraction)
+        private bool TryAverage(int device, double now, out RigidPose mean, out bool still, out int trackedFraction)
         {
             int n = 0, total = 0;
             for (int k = 0; k < _count; k++)
@@ -155,7 +155,7 @@ namespace AvatarGo.Core
             }
             trackedFraction = total == 0 ? 0 : n * 100 / total;
             still = false;
-            mean = Pose.Identity;
+            mean = RigidPose.Identity;
             if (n == 0) return false;
             Vector3 p = Vector3.Zero;
             for (int i = 0; i < n; i++) p += _positionScratch[i];
@@ -165,7 +165,7 @@ namespace AvatarGo.Core
             for (int i = 0; i < n; i++)
                 if (Vector3.Distance(_positionScratch[i], p) > _settings.StillPosition || Rotations.AngleDegrees(_rotationScratch[i], q) > _settings.StillRotationDegrees)
                     still = false;
-            mean = new Pose(p, q);
+            mean = new RigidPose(p, q);
             return true;
         }
 
@@ -185,7 +185,7 @@ namespace AvatarGo.Core
             if (hmds.Count < 1 || controllers.Count < 2 || trackers.Count < 3)
                 return Fail(CalibrationError.DeviceMissing, $"found {hmds.Count} HMD, {controllers.Count} controllers, {trackers.Count} trackers");
 
-            var mean = new Pose[_devices.Length];
+            var mean = new RigidPose[_devices.Length];
             var usable = new bool[_devices.Length];
             var still = new bool[_devices.Length];
             for (int d = 0; d < _devices.Length; d++)
@@ -200,7 +200,7 @@ namespace AvatarGo.Core
             if (liveControllers.Count > 2) Explanation += $"Using the first two of {liveControllers.Count} controllers. ";
 
             float floor = _settings.FloorHeight;
-            Pose head = mean[hmd];
+            RigidPose head = mean[hmd];
             if (float.IsNaN(floor))
             {
                 float lowest = float.MaxValue;
@@ -303,13 +303,13 @@ namespace AvatarGo.Core
 
             // Scale: the wearer's eye height over the avatar's.
             var unscaled = new SkeletonPose(_avatar.Skeleton);
-            TPoser.Apply(_avatar, unscaled, Pose.Identity);
+            TPoser.Apply(_avatar, unscaled, RigidPose.Identity);
             float avatarEye = TPoser.EyePosition(_avatar, unscaled, Quaternion.Identity).Y;
             float scale = eyeHeight / avatarEye;
 
             // Placement: between the ankles (the foot trackers sit on the insteps), on the floor, facing the wearer's way.
             Vector3 feet = (mean[footA].Position + mean[footB].Position) * 0.5f - forward * _settings.FootTrackerForward;
-            var placement = new Pose(new Vector3(feet.X, floor, feet.Z), Rotations.LookRotation(forward, up));
+            var placement = new RigidPose(new Vector3(feet.X, floor, feet.Z), Rotations.LookRotation(forward, up));
 
             Skeleton scaled = _avatar.Skeleton.Scaled(scale);
             ScaledAvatar = new HumanoidMap(scaled, _avatar.Pairs());
@@ -328,7 +328,7 @@ namespace AvatarGo.Core
 
         private bool ComputeOffsets(double now)
         {
-            var device = new Pose[7];
+            var device = new RigidPose[7];
             foreach (DeviceRole role in BodyRoles.All)
             {
                 int d = _deviceByRole[(int)role];
@@ -338,7 +338,7 @@ namespace AvatarGo.Core
             }
             foreach (DeviceRole role in BodyRoles.All)
             {
-                Pose joint = AvatarPose.World[ScaledAvatar[BodyRoles.JointOf(role)]];
+                RigidPose joint = AvatarPose.World[ScaledAvatar[BodyRoles.JointOf(role)]];
                 Profile.SetOffsets(role, device[(int)role], joint);
             }
             Profile.RootToHead = device[(int)DeviceRole.Head].Position - device[(int)DeviceRole.Pelvis].Position;

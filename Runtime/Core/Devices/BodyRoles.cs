@@ -12,16 +12,16 @@ namespace AvatarGo.Core
         };
 
         /// <summary>The humanoid joint a role's device drives (head, wrists, hips, ankles).</summary>
-        public static HumanBone JointOf(DeviceRole role)
+        public static HumanoidBone JointOf(DeviceRole role)
         {
             switch (role)
             {
-                case DeviceRole.Head: return HumanBone.Head;
-                case DeviceRole.LeftHand: return HumanBone.LeftHand;
-                case DeviceRole.RightHand: return HumanBone.RightHand;
-                case DeviceRole.Pelvis: return HumanBone.Hips;
-                case DeviceRole.LeftFoot: return HumanBone.LeftFoot;
-                case DeviceRole.RightFoot: return HumanBone.RightFoot;
+                case DeviceRole.Head: return HumanoidBone.Head;
+                case DeviceRole.LeftHand: return HumanoidBone.LeftHand;
+                case DeviceRole.RightHand: return HumanoidBone.RightHand;
+                case DeviceRole.Pelvis: return HumanoidBone.Hips;
+                case DeviceRole.LeftFoot: return HumanoidBone.LeftFoot;
+                case DeviceRole.RightFoot: return HumanoidBone.RightFoot;
                 default: throw new ArgumentOutOfRangeException(nameof(role), role, "No joint for this role.");
             }
         }

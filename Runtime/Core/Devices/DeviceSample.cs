@@ -4,13 +4,13 @@ namespace AvatarGo.Core
     public readonly struct DeviceSample
     {
         /// <summary>The device pose in tracking space (Unity's frame). Meaningful only when <see cref="IsTracked"/>.</summary>
-        public readonly Pose Pose;
+        public readonly RigidPose Pose;
 
         /// <summary>True when the runtime reports the pose as tracked.</summary>
         public readonly bool IsTracked;
 
         /// <summary>Creates a sample.</summary>
-        public DeviceSample(Pose pose, bool isTracked)
+        public DeviceSample(RigidPose pose, bool isTracked)
         {
             Pose = pose;
             IsTracked = isTracked;
@@ -20,6 +20,6 @@ namespace AvatarGo.Core
         public bool IsUsable => IsTracked && Pose.IsValid;
 
         /// <summary>An untracked sample.</summary>
-        public static DeviceSample Lost => new DeviceSample(Pose.Identity, false);
+        public static DeviceSample Lost => new DeviceSample(RigidPose.Identity, false);
     }
 }

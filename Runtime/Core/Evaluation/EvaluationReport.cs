@@ -18,7 +18,7 @@ namespace AvatarGo.Core
         public string CalibrationMessage { get; internal set; }
 
         /// <summary>Position error per humanoid joint, in millimetres.</summary>
-        public Dictionary<HumanBone, ErrorSeries> JointPositionMm { get; } = new Dictionary<HumanBone, ErrorSeries>();
+        public Dictionary<HumanoidBone, ErrorSeries> JointPositionMm { get; } = new Dictionary<HumanoidBone, ErrorSeries>();
 
         /// <summary>Position error of the end effectors (hips, head, hands, feet), in millimetres.</summary>
         public ErrorSeries EndEffectorMm { get; } = new ErrorSeries();

@@ -10,11 +10,11 @@ namespace AvatarGo.Core
     /// </summary>
     public static class SessionEvaluator
     {
-        private static readonly HumanBone[] EndEffectors =
-            { HumanBone.Hips, HumanBone.Head, HumanBone.LeftHand, HumanBone.RightHand, HumanBone.LeftFoot, HumanBone.RightFoot };
+        private static readonly HumanoidBone[] EndEffectors =
+            { HumanoidBone.Hips, HumanoidBone.Head, HumanoidBone.LeftHand, HumanoidBone.RightHand, HumanoidBone.LeftFoot, HumanoidBone.RightFoot };
 
-        private static readonly HumanBone[] MidJoints =
-            { HumanBone.LeftLowerArm, HumanBone.RightLowerArm, HumanBone.LeftLowerLeg, HumanBone.RightLowerLeg };
+        private static readonly HumanoidBone[] MidJoints =
+            { HumanoidBone.LeftLowerArm, HumanoidBone.RightLowerArm, HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg };
 
         /// <summary>Evaluates one offset mode over the session read by <paramref name="reader"/> (consumed to its end).</summary>
         /// <param name="reader">A session with ground truth.</param>
@@ -34,8 +34,8 @@ namespace AvatarGo.Core
             FullBodyIk ik = null;
             SkeletonPose pose = null;
             var targets = new BodyTargets();
-            var truthAtCalibration = new Pose[HumanBones.Count];
-            var avatarAtCalibration = new Pose[HumanBones.Count];
+            var truthAtCalibration = new RigidPose[HumanoidBones.Count];
+            var avatarAtCalibration = new RigidPose[HumanoidBones.Count];
             HumanoidMap scaled = null;
 
             while (reader.ReadFrame(frame))
@@ -51,10 +51,10 @@ namespace AvatarGo.Core
                     ik = new FullBodyIk(scaled, calibrator.AvatarPose);
                     pose = new SkeletonPose(scaled.Skeleton);
                     pose.CopyFrom(calibrator.AvatarPose);
-                    for (int b = 0; b < HumanBones.Count; b++)
+                    for (int b = 0; b < HumanoidBones.Count; b++)
                     {
                         truthAtCalibration[b] = frame.Truth[b];
-                        if (scaled.Has((HumanBone)b)) avatarAtCalibration[b] = calibrator.AvatarPose.World[scaled[(HumanBone)b]];
+                        if (scaled.Has((HumanoidBone)b)) avatarAtCalibration[b] = calibrator.AvatarPose.World[scaled[(HumanoidBone)b]];
                     }
                     continue;
                 }
@@ -64,12 +64,12 @@ namespace AvatarGo.Core
                 if (!ikReport.LeftHand.Reached || !ikReport.RightHand.Reached) report.UnreachedHandFrames++;
                 onFrame?.Invoke(pose);
                 report.Frames++;
-                for (int b = 0; b < HumanBones.Count; b++)
+                for (int b = 0; b < HumanoidBones.Count; b++)
                 {
-                    var bone = (HumanBone)b;
-                    if (!frame.HasTruth[b] || !scaled.Has(bone) || HumanBones.IsFinger(bone)) continue;
-                    Pose a = pose.World[scaled[bone]];
-                    Pose t = frame.Truth[b];
+                    var bone = (HumanoidBone)b;
+                    if (!frame.HasTruth[b] || !scaled.Has(bone) || HumanoidBones.IsFinger(bone)) continue;
+                    RigidPose a = pose.World[scaled[bone]];
+                    RigidPose t = frame.Truth[b];
                     double mm = Vector3.Distance(a.Position, t.Position) * 1000.0;
                     if (!report.JointPositionMm.TryGetValue(bone, out ErrorSeries series)) report.JointPositionMm[bone] = series = new ErrorSeries();
                     series.Add(mm);
@@ -85,9 +85,9 @@ namespace AvatarGo.Core
                 }
                 foreach (bool left in new[] { true, false })
                 {
-                    HumanBone hip = left ? HumanBone.LeftUpperLeg : HumanBone.RightUpperLeg;
-                    HumanBone knee = left ? HumanBone.LeftLowerLeg : HumanBone.RightLowerLeg;
-                    HumanBone ankle = left ? HumanBone.LeftFoot : HumanBone.RightFoot;
+                    HumanoidBone hip = left ? HumanoidBone.LeftUpperLeg : HumanoidBone.RightUpperLeg;
+                    HumanoidBone knee = left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg;
+                    HumanoidBone ankle = left ? HumanoidBone.LeftFoot : HumanoidBone.RightFoot;
                     if (!frame.HasTruth[(int)hip] || !frame.HasTruth[(int)knee] || !frame.HasTruth[(int)ankle]) continue;
                     double avatarAngle = KneeAngle(pose.World[scaled[hip]].Position, pose.World[scaled[knee]].Position, pose.World[scaled[ankle]].Position);
                     double truthAngle = KneeAngle(frame.Truth[(int)hip].Position, frame.Truth[(int)knee].Position, frame.Truth[(int)ankle].Position);

@@ -46,8 +46,8 @@ namespace AvatarGo.Core
         private readonly float[] _t = new float[HandModel.ParameterCount];
         private readonly Vector3[] _points = new Vector3[3];
         private readonly Vector3[] _pointGradients = new Vector3[3];
-        private Pose _handInController;
-        private readonly Pose[] _fingerBase = new Pose[5];
+        private RigidPose _handInController;
+        private readonly RigidPose[] _fingerBase = new RigidPose[5];
         private Vector3 _thumbSpreadAxis;   // this frame's, in the controller frame, scaled by the full spread angle
         private readonly Vector3 _thumbGoal, _indexGoal;
 
@@ -62,11 +62,11 @@ namespace AvatarGo.Core
             // holds it, from the best point of a coarse grid over each finger's parameters (the cost has local
             // minima: a thumb whose tip touches the side of the controller's head stays there). Near every frame's
             // answer, and the same whatever the frame rate.
-            Pose held = hand.ControllerInHand(profile);
+            RigidPose held = hand.ControllerInHand(profile);
             PlaceHand(held.Inverse());
             for (int f = 0; f < 5; f++)
                 if (_hand.HasFinger[f]) GridStart(f);
-            Solve(Pose.Identity, held, GripMode.Hold);
+            Solve(RigidPose.Identity, held, GripMode.Hold);
             Array.Copy(_solved, _start, HandModel.ParameterCount);
             Array.Clear(_solved, 0, HandModel.ParameterCount);
             Array.Clear(_t, 0, HandModel.ParameterCount);
@@ -88,7 +88,7 @@ namespace AvatarGo.Core
         /// Solves the fingers for this frame. <paramref name="trigger"/> and <paramref name="grip"/> are the analog
         /// values 0..1 for <see cref="GripMode.InputDriven"/> (NaN: not provided; grip defaults to held, trigger to released).
         /// </summary>
-        public void Solve(Pose handWorld, Pose controllerWorld, GripMode mode, float trigger = float.NaN, float grip = float.NaN)
+        public void Solve(RigidPose handWorld, RigidPose controllerWorld, GripMode mode, float trigger = float.NaN, float grip = float.NaN)
         {
             LastIterations = 0;
             if (!handWorld.IsValid || !controllerWorld.IsValid) return; // keep the last good grip
@@ -154,7 +154,7 @@ namespace AvatarGo.Core
             if ((uint)point > 2) throw new ArgumentOutOfRangeException(nameof(point), point, "Points are 0 (intermediate joint), 1 (distal joint) and 2 (fingertip).");
             if (!_hand.HasFinger[finger]) return new Vector3(float.NaN);
             int o = finger * 3;
-            Chain(finger, new Vector4(_t[o], _t[o + 1], _t[o + 2], finger == 0 ? _t[HandModel.ThumbSpreadIndex] : 0f), out _, out Pose w1, out Pose w2);
+            Chain(finger, new Vector4(_t[o], _t[o + 1], _t[o + 2], finger == 0 ? _t[HandModel.ThumbSpreadIndex] : 0f), out _, out RigidPose w1, out RigidPose w2);
             return point == 0 ? w1.Position : point == 1 ? w2.Position : w2.TransformPoint(_hand.TipLocal[finger]);
         }
 
@@ -182,7 +182,7 @@ namespace AvatarGo.Core
 
         // What stays fixed through a frame's descent: the hand in the controller frame, each finger's base, and the
         // thumb's spread axis.
-        private void PlaceHand(Pose handInController)
+        private void PlaceHand(RigidPose handInController)
         {
             _handInController = handInController;
             for (int f = 0; f < 5; f++) _fingerBase[f] = handInController * _hand.RestRelative[f, 0];
@@ -233,7 +233,7 @@ namespace AvatarGo.Core
         // The cost of finger f at parameters t (x, y, z its joints, w the thumb's spread) and its gradient.
         internal float Cost(int f, Vector4 t, out Vector4 gradient)
         {
-            Chain(f, t, out Pose w0, out Pose w1, out Pose w2);
+            Chain(f, t, out RigidPose w0, out RigidPose w1, out RigidPose w2);
             _points[0] = w1.Position;
             _points[1] = w2.Position;
             _points[2] = w2.TransformPoint(_hand.TipLocal[f]);
@@ -286,19 +286,19 @@ namespace AvatarGo.Core
         }
 
         // Forward kinematics of finger f in the controller frame. The quaternions stay unit to float precision
-        // over three products, so this hot path skips the renormalisation Pose's operator does.
-        private void Chain(int f, Vector4 t, out Pose w0, out Pose w1, out Pose w2)
+        // over three products, so this hot path skips the renormalisation RigidPose's operator does.
+        private void Chain(int f, Vector4 t, out RigidPose w0, out RigidPose w1, out RigidPose w2)
         {
-            Pose b = _fingerBase[f];
+            RigidPose b = _fingerBase[f];
             Quaternion bend0 = Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 0], t.X * _hand.MaxRadians[f, 0]);
             if (f == 0) bend0 = Quaternion.CreateFromAxisAngle(_hand.ThumbSpreadAxisLocal, t.W * _hand.ThumbSpreadRadians) * bend0;
             Quaternion r0 = b.Rotation * bend0;
-            w0 = new Pose(b.Position, r0);
-            Pose rest1 = _hand.RestRelative[f, 1], rest2 = _hand.RestRelative[f, 2];
+            w0 = new RigidPose(b.Position, r0);
+            RigidPose rest1 = _hand.RestRelative[f, 1], rest2 = _hand.RestRelative[f, 2];
             Quaternion r1 = r0 * rest1.Rotation * Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 1], t.Y * _hand.MaxRadians[f, 1]);
-            w1 = new Pose(b.Position + Vector3.Transform(rest1.Position, r0), r1);
+            w1 = new RigidPose(b.Position + Vector3.Transform(rest1.Position, r0), r1);
             Quaternion r2 = r1 * rest2.Rotation * Quaternion.CreateFromAxisAngle(_hand.AxisLocal[f, 2], t.Z * _hand.MaxRadians[f, 2]);
-            w2 = new Pose(w1.Position + Vector3.Transform(rest2.Position, r1), r2);
+            w2 = new RigidPose(w1.Position + Vector3.Transform(rest2.Position, r1), r2);
         }
 
         // Where a fingertip's centre is when its pad touches the surface point p: p moved along the surface normal to

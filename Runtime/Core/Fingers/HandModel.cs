@@ -42,7 +42,7 @@ namespace AvatarGo.Core
         public const float GripAlongPalm = 0.8f;
 
         internal readonly int[,] Joints = new int[5, 3];
-        internal readonly Pose[,] RestRelative = new Pose[5, 3];   // joint 0 relative to the hand, others to their parent joint
+        internal readonly RigidPose[,] RestRelative = new RigidPose[5, 3];   // joint 0 relative to the hand, others to their parent joint
         internal readonly Vector3[,] AxisLocal = new Vector3[5, 3];
         internal readonly float[,] MaxRadians = new float[5, 3];
         internal readonly Vector3[] TipLocal = new Vector3[5];
@@ -59,15 +59,15 @@ namespace AvatarGo.Core
             Map = map;
             IsLeft = left;
             Skeleton s = map.Skeleton;
-            HandJoint = map[left ? HumanBone.LeftHand : HumanBone.RightHand];
+            HandJoint = map[left ? HumanoidBone.LeftHand : HumanoidBone.RightHand];
             if (HandJoint < 0) throw new ArgumentException("The rig has no hand bone on that side.", nameof(map));
-            var rest = new Pose[s.JointCount];
-            var world = new Pose[s.JointCount];
+            var rest = new RigidPose[s.JointCount];
+            var world = new RigidPose[s.JointCount];
             s.GetRestLocal(rest);
             s.ComputeWorld(rest, world);
-            Pose hand = world[HandJoint];
+            RigidPose hand = world[HandJoint];
 
-            int index = map[HumanBones.Finger(left, 1, 0)], little = map[HumanBones.Finger(left, 4, 0)], middle = map[HumanBones.Finger(left, 2, 0)];
+            int index = map[HumanoidBones.Finger(left, 1, 0)], little = map[HumanoidBones.Finger(left, 4, 0)], middle = map[HumanoidBones.Finger(left, 2, 0)];
             if (index < 0 || little < 0 || middle < 0) throw new ArgumentException("The hand needs index, middle and little fingers.", nameof(map));
             Vector3 along = Vector3.Normalize(world[middle].Position - hand.Position);
             Vector3 across = Vector3.Normalize(world[index].Position - world[little].Position);
@@ -83,7 +83,7 @@ namespace AvatarGo.Core
 
             for (int f = 0; f < 5; f++)
             {
-                int j0 = map[HumanBones.Finger(left, f, 0)], j1 = map[HumanBones.Finger(left, f, 1)], j2 = map[HumanBones.Finger(left, f, 2)];
+                int j0 = map[HumanoidBones.Finger(left, f, 0)], j1 = map[HumanoidBones.Finger(left, f, 1)], j2 = map[HumanoidBones.Finger(left, f, 2)];
                 if (j0 < 0 || j1 < 0 || j2 < 0) continue;
                 HasFinger[f] = true;
                 Joints[f, 0] = j0; Joints[f, 1] = j1; Joints[f, 2] = j2;
@@ -153,14 +153,14 @@ namespace AvatarGo.Core
         /// the index, its trigger side (+Z) away from the palm, its origin one handle radius plus a finger radius
         /// off the palm centre — the palm centre on the grip.
         /// </summary>
-        public Pose ControllerInHand(ControllerProfile profile)
+        public RigidPose ControllerInHand(ControllerProfile profile)
         {
             if (profile == null) throw new ArgumentNullException(nameof(profile));
             float radius = -profile.Shape.Distance(Vector3.Zero);
             Vector3 up = AcrossInHand;
             Vector3 forward = Vector3.Normalize(Vectors.ProjectOnPlane(PalmNormalInHand, up));
             Vector3 origin = PalmCentreInHand + PalmNormalInHand * (radius + 0.002f);
-            return new Pose(origin, Rotations.LookRotation(forward, up));
+            return new RigidPose(origin, Rotations.LookRotation(forward, up));
         }
 
         /// <summary>
@@ -168,7 +168,7 @@ namespace AvatarGo.Core
         /// it holds <paramref name="profile"/>. A tracked controller pose <c>c</c> puts the avatar's wrist at
         /// <c>c * WristInController(profile)</c> (what calibration needs to place the wrist on the controller).
         /// </summary>
-        public Pose WristInController(ControllerProfile profile) => ControllerInHand(profile).Inverse();
+        public RigidPose WristInController(ControllerProfile profile) => ControllerInHand(profile).Inverse();
 
         /// <summary>
         /// Sets the finger joints of <paramref name="pose"/> from the <see cref="ParameterCount"/> parameters
@@ -185,8 +185,8 @@ namespace AvatarGo.Core
                 for (int k = 0; k < 3; k++)
                 {
                     int j = Joints[f, k];
-                    Pose rest = pose.Skeleton.GetRestLocal(j);
-                    pose.Local[j] = new Pose(rest.Position, Quaternion.Normalize(rest.Rotation * Bend(f, k, t[f * 3 + k], f == 0 && k == 0 ? t[ThumbSpreadIndex] : 0f)));
+                    RigidPose rest = pose.Skeleton.GetRestLocal(j);
+                    pose.Local[j] = new RigidPose(rest.Position, Quaternion.Normalize(rest.Rotation * Bend(f, k, t[f * 3 + k], f == 0 && k == 0 ? t[ThumbSpreadIndex] : 0f)));
                 }
             }
         }
@@ -202,7 +202,7 @@ namespace AvatarGo.Core
 
         private static float Clamp01(float v) => v > 0f ? (v < 1f ? v : 1f) : 0f;
 
-        private static Vector3 TipOf(Skeleton s, Pose[] world, int j1, int j2)
+        private static Vector3 TipOf(Skeleton s, RigidPose[] world, int j1, int j2)
         {
             for (int c = j2 + 1; c < s.JointCount; c++)
                 if (s.GetParent(c) == j2) return world[c].RelativeTo(world[j2]).Position;

@@ -64,26 +64,26 @@ namespace AvatarGo.Core
             if (!Rotations.IsUnit(armRotation)) throw new ArgumentOutOfRangeException(nameof(armRotation), armRotation, "The arm rotation must be a unit quaternion.");
             var names = new List<string>();
             var parents = new List<int>();
-            var world = new List<Pose>();
+            var world = new List<RigidPose>();
             var ends = new List<bool>();
-            var bones = new List<KeyValuePair<HumanBone, string>>();
+            var bones = new List<KeyValuePair<HumanoidBone, string>>();
             var rng = new Random(seed);
             boneAxis = Vector3.Normalize(boneAxis);
 
-            Pose Frame(Vector3 position, Vector3 direction)
+            RigidPose Frame(Vector3 position, Vector3 direction)
             {
                 Quaternion q = Rotations.FromTo(boneAxis, direction);
                 if (seed != 0) q = q * Quaternion.CreateFromAxisAngle(boneAxis, (float)(rng.NextDouble() * 2 * Math.PI));
-                return new Pose(position, Quaternion.Normalize(armRotation * q));
+                return new RigidPose(position, Quaternion.Normalize(armRotation * q));
             }
 
-            int Add(string name, int parent, Pose w, bool end)
+            int Add(string name, int parent, RigidPose w, bool end)
             {
                 names.Add(name); parents.Add(parent); world.Add(w); ends.Add(end);
                 return names.Count - 1;
             }
 
-            names.Add("Root"); parents.Add(-1); world.Add(Pose.Identity); ends.Add(false);
+            names.Add("Root"); parents.Add(-1); world.Add(RigidPose.Identity); ends.Add(false);
             for (int side = 0; side < 2; side++)
             {
                 bool left = side == 0;
@@ -96,8 +96,8 @@ namespace AvatarGo.Core
                 Vector3 elbow = Map(new Vector3(0.45f, 1.4f, 0f));
                 int arm = Add(prefix + "ForeArm", 0, Frame(elbow, Canon(Vector3.UnitX)), false);
                 int hand = Add(prefix + "Hand", arm, Frame(elbow + Map(new Vector3(0.25f * scale, 0f, 0f)), Canon(Vector3.UnitX)), false);
-                bones.Add(new KeyValuePair<HumanBone, string>(left ? HumanBone.LeftLowerArm : HumanBone.RightLowerArm, prefix + "ForeArm"));
-                bones.Add(new KeyValuePair<HumanBone, string>(left ? HumanBone.LeftHand : HumanBone.RightHand, prefix + "Hand"));
+                bones.Add(new KeyValuePair<HumanoidBone, string>(left ? HumanoidBone.LeftLowerArm : HumanoidBone.RightLowerArm, prefix + "ForeArm"));
+                bones.Add(new KeyValuePair<HumanoidBone, string>(left ? HumanoidBone.LeftHand : HumanoidBone.RightHand, prefix + "Hand"));
                 Vector3 wristWorld = world[hand].Position;
                 for (int f = 0; f < 5; f++)
                 {
@@ -108,14 +108,14 @@ namespace AvatarGo.Core
                     {
                         string name = prefix + FingerNames[f] + (k + 1);
                         parent = Add(name, parent, Frame(p, dir), false);
-                        bones.Add(new KeyValuePair<HumanBone, string>(HumanBones.Finger(left, f, k), name));
+                        bones.Add(new KeyValuePair<HumanoidBone, string>(HumanoidBones.Finger(left, f, k), name));
                         p += Map(Directions[f] * (Lengths[f][k] * scale));
                     }
-                    Add(prefix + FingerNames[f] + "_End", parent, new Pose(p, world[parent].Rotation), true);
+                    Add(prefix + FingerNames[f] + "_End", parent, new RigidPose(p, world[parent].Rotation), true);
                 }
             }
 
-            var local = new Pose[names.Count];
+            var local = new RigidPose[names.Count];
             for (int i = 0; i < local.Length; i++)
                 local[i] = parents[i] < 0 ? world[i] : world[i].RelativeTo(world[parents[i]]);
             var skeleton = new Skeleton(names, parents, local, ends);

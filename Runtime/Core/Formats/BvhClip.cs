@@ -64,8 +64,8 @@ namespace AvatarGo.Core
             FrameTime = frameTime;
             Scale = scale;
 
-            var rest = new Pose[n];
-            for (int i = 0; i < n; i++) rest[i] = new Pose(ToUnity(_fileOffsets[i]) * scale, Quaternion.Identity);
+            var rest = new RigidPose[n];
+            for (int i = 0; i < n; i++) rest[i] = new RigidPose(ToUnity(_fileOffsets[i]) * scale, Quaternion.Identity);
             Skeleton = new Skeleton(names, parents, rest, isEndSite);
         }
 
@@ -114,7 +114,7 @@ namespace AvatarGo.Core
         /// <summary>
         /// The local pose of every joint in a frame, in Unity's frame and scaled. Allocation-free.
         /// </summary>
-        public void GetLocalPoses(int frame, Span<Pose> local)
+        public void GetLocalPoses(int frame, Span<RigidPose> local)
         {
             if ((uint)frame >= (uint)FrameCount) throw new ArgumentOutOfRangeException(nameof(frame), frame, $"The clip has {FrameCount} frames.");
             if (local.Length != _channels.Length) throw new ArgumentException($"Expected {_channels.Length} poses, got {local.Length}.", nameof(local));
@@ -138,12 +138,12 @@ namespace AvatarGo.Core
                         default: q *= AxisRotation(2, v); break;
                     }
                 }
-                local[j] = new Pose(ToUnity(t) * Scale, ToUnity(Quaternion.Normalize(q)));
+                local[j] = new RigidPose(ToUnity(t) * Scale, ToUnity(Quaternion.Normalize(q)));
             }
         }
 
         /// <summary>The world pose of every joint in a frame (Unity's frame, scaled). Allocation-free.</summary>
-        public void GetWorldPoses(int frame, Span<Pose> local, Span<Pose> world)
+        public void GetWorldPoses(int frame, Span<RigidPose> local, Span<RigidPose> world)
         {
             GetLocalPoses(frame, local);
             Skeleton.ComputeWorld(local, world);
@@ -156,12 +156,12 @@ namespace AvatarGo.Core
         /// </summary>
         public float GuessMetresPerUnit()
         {
-            var rest = new Pose[Skeleton.JointCount];
-            for (int i = 0; i < rest.Length; i++) rest[i] = new Pose(_fileOffsets[i], Quaternion.Identity);
-            var world = new Pose[rest.Length];
+            var rest = new RigidPose[Skeleton.JointCount];
+            for (int i = 0; i < rest.Length; i++) rest[i] = new RigidPose(_fileOffsets[i], Quaternion.Identity);
+            var world = new RigidPose[rest.Length];
             Skeleton.ComputeWorld(rest, world);
             float min = float.MaxValue, max = float.MinValue;
-            foreach (Pose p in world)
+            foreach (RigidPose p in world)
             {
                 min = Math.Min(min, p.Position.Y);
                 max = Math.Max(max, p.Position.Y);
@@ -177,7 +177,7 @@ namespace AvatarGo.Core
         /// roots get 6 channels (Xposition Yposition Zposition Zrotation Xrotation Yrotation), other joints 3
         /// rotation channels, End Sites none. Lengths are divided by <paramref name="metresPerUnit"/>.
         /// </summary>
-        public static BvhClip FromPoses(Skeleton skeleton, IReadOnlyList<Pose[]> localFrames, float frameTime, float metresPerUnit = 1f)
+        public static BvhClip FromPoses(Skeleton skeleton, IReadOnlyList<RigidPose[]> localFrames, float frameTime, float metresPerUnit = 1f)
         {
             if (skeleton == null) throw new ArgumentNullException(nameof(skeleton));
             if (localFrames == null) throw new ArgumentNullException(nameof(localFrames));
@@ -201,7 +201,7 @@ namespace AvatarGo.Core
             int k = 0;
             for (int f = 0; f < localFrames.Count; f++)
             {
-                Pose[] frame = localFrames[f];
+                RigidPose[] frame = localFrames[f];
                 if (frame == null || frame.Length != n) throw new ArgumentException($"Frame {f} does not have {n} poses.", nameof(localFrames));
                 for (int j = 0; j < n; j++)
                 {

@@ -16,8 +16,8 @@ namespace AvatarGo.Core
             Samples = new DeviceSample[header.Devices.Count];
             Trigger = new float[header.Devices.Count];
             Grip = new float[header.Devices.Count];
-            Truth = new Pose[HumanBones.Count];
-            HasTruth = new bool[HumanBones.Count];
+            Truth = new RigidPose[HumanoidBones.Count];
+            HasTruth = new bool[HumanoidBones.Count];
             Clear();
         }
 
@@ -28,7 +28,7 @@ namespace AvatarGo.Core
         public DeviceSample[] Samples { get; }
 
         /// <summary>Input events of this frame (trigger presses and releases).</summary>
-        public List<InputEvent> Events { get; } = new List<InputEvent>(4);
+        public List<DeviceEvent> Events { get; } = new List<DeviceEvent>(4);
 
         /// <summary>Analog trigger value 0..1 per device, NaN when the frame does not give it.</summary>
         public float[] Trigger { get; }
@@ -36,8 +36,8 @@ namespace AvatarGo.Core
         /// <summary>Analog grip value 0..1 per device, NaN when the frame does not give it.</summary>
         public float[] Grip { get; }
 
-        /// <summary>Synthetic sessions: the wearer's true world pose per <see cref="HumanBone"/> (valid where <see cref="HasTruth"/>).</summary>
-        public Pose[] Truth { get; }
+        /// <summary>Synthetic sessions: the wearer's true world pose per <see cref="HumanoidBone"/> (valid where <see cref="HasTruth"/>).</summary>
+        public RigidPose[] Truth { get; }
 
         /// <summary>Which entries of <see cref="Truth"/> this frame has.</summary>
         public bool[] HasTruth { get; }

@@ -134,7 +134,7 @@ namespace AvatarGo.Core
                     if (Is(2, "tracked")) tracked = true;
                     else if (Is(2, "lost")) tracked = false;
                     else throw Error(_lineNumber, $"expected 'tracked' or 'lost', found '{Token(2).ToString()}'");
-                    Pose p = ReadPose(3, tracked);
+                    RigidPose p = ReadPose(3, tracked);
                     frame.Samples[index] = new DeviceSample(p, tracked);
                 }
                 else if (Is(0, "input"))
@@ -150,13 +150,13 @@ namespace AvatarGo.Core
                 {
                     Expect(3, "event ID KIND");
                     int index = Device(1);
-                    if (!SessionText.TryEvent(Token(2), out InputEventKind kind)) throw Error(_lineNumber, $"unknown event '{Token(2).ToString()}'");
-                    frame.Events.Add(new InputEvent(Header.Devices[index].Id, kind));
+                    if (!SessionText.TryEvent(Token(2), out DeviceEventKind kind)) throw Error(_lineNumber, $"unknown event '{Token(2).ToString()}'");
+                    frame.Events.Add(new DeviceEvent(Header.Devices[index].Id, kind));
                 }
                 else if (Is(0, "truth"))
                 {
                     Expect(9, "truth BONE PX PY PZ QX QY QZ QW");
-                    if (!TryBone(Token(1), out HumanBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Token(1).ToString()}'");
+                    if (!TryBone(Token(1), out HumanoidBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Token(1).ToString()}'");
                     if (frame.HasTruth[(int)bone]) throw Error(_lineNumber, $"bone {SessionText.BoneName(bone)} has two truth poses in one frame");
                     frame.Truth[(int)bone] = ReadPose(2, true);
                     frame.HasTruth[(int)bone] = true;
@@ -195,9 +195,9 @@ namespace AvatarGo.Core
             var trueRoles = new Dictionary<int, DeviceRole>();
             var names = new List<string>();
             var parents = new List<int>();
-            var rest = new List<Pose>();
+            var rest = new List<RigidPose>();
             var endSites = new List<bool>();
-            var bones = new List<KeyValuePair<HumanBone, string>>();
+            var bones = new List<KeyValuePair<HumanoidBone, string>>();
             while (true)
             {
                 if (!NextLine()) throw Error(_lineNumber + 1, "the file ends inside the header (no 'end-header')");
@@ -256,9 +256,9 @@ namespace AvatarGo.Core
                     else throw Error(_lineNumber, $"expected 'joint' or 'end', found '{Token(4).ToString()}'");
                     if (!Is(3, "-"))
                     {
-                        if (!TryBone(Token(3), out HumanBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Token(3).ToString()}'");
+                        if (!TryBone(Token(3), out HumanoidBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Token(3).ToString()}'");
                         foreach (var pair in bones) if (pair.Key == bone) throw Error(_lineNumber, $"bone {bone} is mapped twice");
-                        bones.Add(new KeyValuePair<HumanBone, string>(bone, name));
+                        bones.Add(new KeyValuePair<HumanoidBone, string>(bone, name));
                     }
                     names.Add(name);
                     parents.Add(parent);
@@ -299,7 +299,7 @@ namespace AvatarGo.Core
             }
         }
 
-        private Pose ReadPose(int first, bool mustBeValid)
+        private RigidPose ReadPose(int first, bool mustBeValid)
         {
             var position = new Vector3(Float(first), Float(first + 1), Float(first + 2));
             var rotation = new Quaternion(Float(first + 3), Float(first + 4), Float(first + 5), Float(first + 6));
@@ -309,7 +309,7 @@ namespace AvatarGo.Core
             // Quaternions already unit to float precision keep their exact bits (a write/read round trip is exact);
             // others are renormalised, and a (nearly) zero one in a lost sample becomes the identity.
             if (MathF.Abs(lengthSquared - 1f) > UnitTolerance) rotation = Rotations.NormalizeOr(rotation, Quaternion.Identity);
-            return new Pose(position, rotation);
+            return new RigidPose(position, rotation);
         }
 
         private float Analog(int i)
@@ -328,7 +328,7 @@ namespace AvatarGo.Core
             return index;
         }
 
-        private static bool TryBone(ReadOnlySpan<char> s, out HumanBone bone) => SessionText.TryBone(s, out bone);
+        private static bool TryBone(ReadOnlySpan<char> s, out HumanoidBone bone) => SessionText.TryBone(s, out bone);
 
         private bool NextLine()
         {

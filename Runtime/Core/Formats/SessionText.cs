@@ -31,12 +31,12 @@ namespace AvatarGo.Core
             return false;
         }
 
-        public static string EventName(InputEventKind k) => k == InputEventKind.TriggerPressed ? "trigger-pressed" : "trigger-released";
+        public static string EventName(DeviceEventKind k) => k == DeviceEventKind.TriggerPressed ? "trigger-pressed" : "trigger-released";
 
-        public static bool TryEvent(ReadOnlySpan<char> s, out InputEventKind k)
+        public static bool TryEvent(ReadOnlySpan<char> s, out DeviceEventKind k)
         {
-            if (s.SequenceEqual("trigger-pressed".AsSpan())) { k = InputEventKind.TriggerPressed; return true; }
-            if (s.SequenceEqual("trigger-released".AsSpan())) { k = InputEventKind.TriggerReleased; return true; }
+            if (s.SequenceEqual("trigger-pressed".AsSpan())) { k = DeviceEventKind.TriggerPressed; return true; }
+            if (s.SequenceEqual("trigger-released".AsSpan())) { k = DeviceEventKind.TriggerReleased; return true; }
             k = default;
             return false;
         }
@@ -45,19 +45,19 @@ namespace AvatarGo.Core
 
         private static string[] BuildBoneNames()
         {
-            var names = new string[HumanBones.Count];
-            for (int b = 0; b < names.Length; b++) names[b] = ((HumanBone)b).ToString();
+            var names = new string[HumanoidBones.Count];
+            for (int b = 0; b < names.Length; b++) names[b] = ((HumanoidBone)b).ToString();
             return names;
         }
 
         /// <summary>The Unity HumanBodyBones name of a bone, without allocating.</summary>
-        public static string BoneName(HumanBone bone) => BoneNames[(int)bone];
+        public static string BoneName(HumanoidBone bone) => BoneNames[(int)bone];
 
-        public static bool TryBone(ReadOnlySpan<char> s, out HumanBone bone)
+        public static bool TryBone(ReadOnlySpan<char> s, out HumanoidBone bone)
         {
             for (int b = 0; b < BoneNames.Length; b++)
-                if (s.SequenceEqual(BoneNames[b].AsSpan())) { bone = (HumanBone)b; return true; }
-            bone = HumanBone.LastBone;
+                if (s.SequenceEqual(BoneNames[b].AsSpan())) { bone = (HumanoidBone)b; return true; }
+            bone = HumanoidBone.LastBone;
             return false;
         }
 

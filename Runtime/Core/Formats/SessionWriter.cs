@@ -49,7 +49,7 @@ namespace AvatarGo.Core
         /// into a reused buffer). A lost sample whose pose is not finite is written as the identity pose.
         /// </summary>
         /// <exception cref="ArgumentException">The frame is for another header, its time goes backwards or is not finite,
-        /// an event names an unknown device, or a tracked pose or a truth pose is not valid (<see cref="Pose.IsValid"/>).</exception>
+        /// an event names an unknown device, or a tracked pose or a truth pose is not valid (<see cref="RigidPose.IsValid"/>).</exception>
         /// <exception cref="InvalidOperationException">The session is already complete.</exception>
         public void WriteFrame(SessionFrame frame)
         {
@@ -65,26 +65,26 @@ namespace AvatarGo.Core
             for (int k = 0; k < frame.Events.Count; k++)
                 if (Header.IndexOf(frame.Events[k].DeviceId) < 0) throw new ArgumentException($"Event from unknown device {frame.Events[k].DeviceId}.", nameof(frame));
             for (int b = 0; b < frame.HasTruth.Length; b++)
-                if (frame.HasTruth[b] && !frame.Truth[b].IsValid) throw new ArgumentException($"Truth pose of {(HumanBone)b} is not valid: {frame.Truth[b]}.", nameof(frame));
+                if (frame.HasTruth[b] && !frame.Truth[b].IsValid) throw new ArgumentException($"Truth pose of {(HumanoidBone)b} is not valid: {frame.Truth[b]}.", nameof(frame));
             _lastTime = frame.Time;
 
             Begin("frame ").Append(frame.Time).EndLine();
             for (int i = 0; i < frame.Samples.Length; i++)
             {
                 DeviceSample s = frame.Samples[i];
-                Pose p = s.Pose;
-                if (!s.IsTracked && !(Vectors.IsFinite(p.Position) && Rotations.IsFinite(p.Rotation))) p = Pose.Identity;
+                RigidPose p = s.Pose;
+                if (!s.IsTracked && !(Vectors.IsFinite(p.Position) && Rotations.IsFinite(p.Rotation))) p = RigidPose.Identity;
                 Begin("pose ").Append(Header.Devices[i].Id).Append(s.IsTracked ? " tracked " : " lost ").Append(p).EndLine();
                 if (!float.IsNaN(frame.Trigger[i]) || !float.IsNaN(frame.Grip[i]))
                     Begin("input ").Append(Header.Devices[i].Id).Append(" ").AppendAnalog(frame.Trigger[i]).Append(" ").AppendAnalog(frame.Grip[i]).EndLine();
             }
             for (int k = 0; k < frame.Events.Count; k++)
             {
-                InputEvent e = frame.Events[k];
+                DeviceEvent e = frame.Events[k];
                 Begin("event ").Append(e.DeviceId).Append(" ").Append(SessionText.EventName(e.Kind)).EndLine();
             }
             for (int b = 0; b < frame.HasTruth.Length; b++)
-                if (frame.HasTruth[b]) Begin("truth ").Append(SessionText.BoneName((HumanBone)b)).Append(" ").Append(frame.Truth[b]).EndLine();
+                if (frame.HasTruth[b]) Begin("truth ").Append(SessionText.BoneName((HumanoidBone)b)).Append(" ").Append(frame.Truth[b]).EndLine();
             FrameCount++;
         }
 
@@ -145,7 +145,7 @@ namespace AvatarGo.Core
 
         private SessionWriter AppendAnalog(float v) => float.IsNaN(v) ? Append("-") : Append(Math.Max(0f, Math.Min(1f, v)));
 
-        private SessionWriter Append(Pose p) =>
+        private SessionWriter Append(RigidPose p) =>
             Append(p.Position.X).Append(" ").Append(p.Position.Y).Append(" ").Append(p.Position.Z).Append(" ")
                 .Append(p.Rotation.X).Append(" ").Append(p.Rotation.Y).Append(" ").Append(p.Rotation.Z).Append(" ").Append(p.Rotation.W);
 
@@ -184,11 +184,11 @@ namespace AvatarGo.Core
                 {
                     string name = s.GetName(j);
                     if (!SessionText.IsToken(name)) throw new ArgumentException($"Joint name '{name}' contains white space.");
-                    Pose rest = s.GetRestLocal(j);
+                    RigidPose rest = s.GetRestLocal(j);
                     if (!rest.IsValid) throw new ArgumentException($"Joint '{name}' has an invalid rest pose {rest}.");
-                    HumanBone bone = map.BoneOf(j);
+                    HumanoidBone bone = map.BoneOf(j);
                     Begin("truth-joint ").Append(j).Append(" ").Append(s.GetParent(j)).Append(" ")
-                        .Append(bone == HumanBone.LastBone ? "-" : SessionText.BoneName(bone)).Append(s.IsEndSite(j) ? " end " : " joint ")
+                        .Append(bone == HumanoidBone.LastBone ? "-" : SessionText.BoneName(bone)).Append(s.IsEndSite(j) ? " end " : " joint ")
                         .Append(name).Append(" ").Append(rest).EndLine();
                 }
             }

@@ -19,10 +19,10 @@ namespace AvatarGo.Core
     /// </remarks>
     public sealed class DeviceMountings
     {
-        private readonly Pose[] _byRole = new Pose[7];
+        private readonly RigidPose[] _byRole = new RigidPose[7];
 
         /// <summary>The mounting of a role's device, in the T-pose body frame relative to its joint.</summary>
-        public Pose this[DeviceRole role]
+        public RigidPose this[DeviceRole role]
         {
             get => _byRole[(int)role];
             set
@@ -36,12 +36,12 @@ namespace AvatarGo.Core
         public static DeviceMountings Default()
         {
             var m = new DeviceMountings();
-            m[DeviceRole.Head] = Pose.Identity;
-            m[DeviceRole.LeftHand] = Pose.FromPosition(new Vector3(-0.07f, -0.04f, 0f));
-            m[DeviceRole.RightHand] = Pose.FromPosition(new Vector3(0.07f, -0.04f, 0f));
-            m[DeviceRole.Pelvis] = Pose.FromPosition(new Vector3(0f, 0.03f, -0.12f));
-            m[DeviceRole.LeftFoot] = Pose.FromPosition(new Vector3(0f, 0.02f, 0.08f));
-            m[DeviceRole.RightFoot] = Pose.FromPosition(new Vector3(0f, 0.02f, 0.08f));
+            m[DeviceRole.Head] = RigidPose.Identity;
+            m[DeviceRole.LeftHand] = RigidPose.FromPosition(new Vector3(-0.07f, -0.04f, 0f));
+            m[DeviceRole.RightHand] = RigidPose.FromPosition(new Vector3(0.07f, -0.04f, 0f));
+            m[DeviceRole.Pelvis] = RigidPose.FromPosition(new Vector3(0f, 0.03f, -0.12f));
+            m[DeviceRole.LeftFoot] = RigidPose.FromPosition(new Vector3(0f, 0.02f, 0.08f));
+            m[DeviceRole.RightFoot] = RigidPose.FromPosition(new Vector3(0f, 0.02f, 0.08f));
             return m;
         }
 
@@ -58,7 +58,7 @@ namespace AvatarGo.Core
                 Quaternion q = hmd
                     ? Rotations.AngleAxis(Uniform(rng, 5f), Vector3.UnitX) * Rotations.AngleAxis(Uniform(rng, 5f), Vector3.UnitZ)
                     : UniformRotation(rng);
-                m[role] = new Pose(p, q);
+                m[role] = new RigidPose(p, q);
             }
             return m;
         }

@@ -63,21 +63,21 @@ namespace AvatarGo.Core
             var calibrator = new Calibrator(devices, _map);
             var frame = new SessionFrame(writer.Header);
             var pose = new SkeletonPose(s);
-            var devicePoses = new Pose[6];
+            var devicePoses = new RigidPose[6];
             float dt = 1f / _options.Rate;
 
             // Where the wearer starts: somewhere in a 2 m × 2 m area, facing anywhere.
-            var start = new Pose(new Vector3((float)rng.NextDouble() * 2 - 1, 0, (float)rng.NextDouble() * 2 - 1),
+            var start = new RigidPose(new Vector3((float)rng.NextDouble() * 2 - 1, 0, (float)rng.NextDouble() * 2 - 1),
                 Rotations.AngleAxis((float)rng.NextDouble() * 360f, Vector3.UnitY));
-            var tposeStart = new Pose[s.JointCount];
+            var tposeStart = new RigidPose[s.JointCount];
             TPoser.Apply(_map, pose, start);
             Array.Copy(pose.Local, tposeStart, s.JointCount);
 
             // The clip's local poses, moved so that its first frame stands where the walk-in ends; filled after step 1.
-            var clipLocal = new Pose[_clip.FrameCount][];
+            var clipLocal = new RigidPose[_clip.FrameCount][];
             for (int f = 0; f < clipLocal.Length; f++)
             {
-                clipLocal[f] = new Pose[s.JointCount];
+                clipLocal[f] = new RigidPose[s.JointCount];
                 _clip.GetLocalPoses(f, clipLocal[f]);
             }
 
@@ -85,9 +85,9 @@ namespace AvatarGo.Core
             int tposeFrames = (int)Math.Round(_options.TPoseSeconds * _options.Rate);
             int walkFrames = (int)Math.Round(_options.WalkInSeconds * _options.Rate);
             int blendFrames = Math.Max(1, (int)Math.Round(_options.BlendSeconds * _options.Rate));
-            Pose[] tposeTarget = null;
-            Pose target = start;
-            var none = new List<InputEvent>();
+            RigidPose[] tposeTarget = null;
+            RigidPose target = start;
+            var none = new List<DeviceEvent>();
 
             for (int i = 0; i < total; i++)
             {
@@ -97,31 +97,31 @@ namespace AvatarGo.Core
                 if (i < tposeFrames)
                 {
                     Array.Copy(tposeStart, pose.Local, s.JointCount);
-                    if (i == tposeFrames - 1) frame.Events.Add(new InputEvent(1, InputEventKind.TriggerPressed));
+                    if (i == tposeFrames - 1) frame.Events.Add(new DeviceEvent(1, DeviceEventKind.TriggerPressed));
                 }
                 else if (i < tposeFrames + walkFrames)
                 {
                     if (tposeTarget == null)
                     {
                         // The avatar appeared where the calibrator placed it: walk there (plus the misalignment).
-                        Pose placement = calibrator.State == CalibrationState.WalkIn ? calibrator.Profile.Placement : start;
-                        target = placement * new Pose(_options.Misalignment, Rotations.AngleAxis(_options.MisalignmentYawDegrees, Vector3.UnitY));
-                        target = new Pose(new Vector3(target.Position.X, 0f, target.Position.Z), target.Rotation);
+                        RigidPose placement = calibrator.State == CalibrationState.WalkIn ? calibrator.Profile.Placement : start;
+                        target = placement * new RigidPose(_options.Misalignment, Rotations.AngleAxis(_options.MisalignmentYawDegrees, Vector3.UnitY));
+                        target = new RigidPose(new Vector3(target.Position.X, 0f, target.Position.Z), target.Rotation);
                         TPoser.Apply(_map, pose, target);
-                        tposeTarget = (Pose[])pose.Local.Clone();
+                        tposeTarget = (RigidPose[])pose.Local.Clone();
                         AlignClip(clipLocal, target);
                     }
                     int k = i - tposeFrames;
                     float walk = Smooth(Math.Min(1f, k / (0.6f * walkFrames)));
                     Blend(tposeStart, tposeTarget, walk, pose.Local);
-                    if (i == tposeFrames + walkFrames - 1) frame.Events.Add(new InputEvent(2, InputEventKind.TriggerPressed));
-                    if (i == tposeFrames) frame.Events.Add(new InputEvent(1, InputEventKind.TriggerReleased));
+                    if (i == tposeFrames + walkFrames - 1) frame.Events.Add(new DeviceEvent(2, DeviceEventKind.TriggerPressed));
+                    if (i == tposeFrames) frame.Events.Add(new DeviceEvent(1, DeviceEventKind.TriggerReleased));
                 }
                 else if (i < tposeFrames + walkFrames + blendFrames)
                 {
                     float b = Smooth((i - tposeFrames - walkFrames) / (float)blendFrames);
                     Blend(tposeTarget, clipLocal[0], b, pose.Local);
-                    if (i == tposeFrames + walkFrames) frame.Events.Add(new InputEvent(2, InputEventKind.TriggerReleased));
+                    if (i == tposeFrames + walkFrames) frame.Events.Add(new DeviceEvent(2, DeviceEventKind.TriggerReleased));
                 }
                 else
                 {
@@ -137,9 +137,9 @@ namespace AvatarGo.Core
                 VirtualDeviceRig.AddNoise(devicePoses, rng, _options.PositionNoise, _options.RotationNoiseDegrees);
                 for (int d = 0; d < devices.Length; d++)
                     frame.Samples[d] = new DeviceSample(devicePoses[Array.IndexOf(BodyRoles.All, DeviceRoles[d])], true);
-                for (int b = 0; b < HumanBones.Count; b++)
+                for (int b = 0; b < HumanoidBones.Count; b++)
                 {
-                    int joint = _map[(HumanBone)b];
+                    int joint = _map[(HumanoidBone)b];
                     if (joint < 0) continue;
                     frame.Truth[b] = pose.World[joint];
                     frame.HasTruth[b] = true;
@@ -151,12 +151,12 @@ namespace AvatarGo.Core
         }
 
         // Moves every clip frame so the first one stands where the T-pose stands (floor at y = 0, same facing).
-        private void AlignClip(Pose[][] clipLocal, Pose target)
+        private void AlignClip(RigidPose[][] clipLocal, RigidPose target)
         {
             Skeleton s = _map.Skeleton;
-            var world = new Pose[s.JointCount];
-            int hips = _map[HumanBone.Hips];
-            int leftLeg = _map[HumanBone.LeftUpperLeg], rightLeg = _map[HumanBone.RightUpperLeg];
+            var world = new RigidPose[s.JointCount];
+            int hips = _map[HumanoidBone.Hips];
+            int leftLeg = _map[HumanoidBone.LeftUpperLeg], rightLeg = _map[HumanoidBone.RightUpperLeg];
             float floor = float.MaxValue;
             for (int f = 0; f < clipLocal.Length; f++)
             {
@@ -176,14 +176,14 @@ namespace AvatarGo.Core
                 for (int j = 0; j < s.JointCount; j++)
                 {
                     if (s.GetParent(j) >= 0) continue;
-                    Pose p = clipLocal[f][j];
-                    clipLocal[f][j] = new Pose(target.Position + Vector3.Transform(p.Position - pivot, turn), Quaternion.Normalize(turn * p.Rotation));
+                    RigidPose p = clipLocal[f][j];
+                    clipLocal[f][j] = new RigidPose(target.Position + Vector3.Transform(p.Position - pivot, turn), Quaternion.Normalize(turn * p.Rotation));
                 }
         }
 
-        private static void Blend(Pose[] a, Pose[] b, float t, Pose[] result)
+        private static void Blend(RigidPose[] a, RigidPose[] b, float t, RigidPose[] result)
         {
-            for (int j = 0; j < result.Length; j++) result[j] = Pose.Lerp(a[j], b[j], t);
+            for (int j = 0; j < result.Length; j++) result[j] = RigidPose.Lerp(a[j], b[j], t);
         }
 
         private static float Smooth(float t) => t * t * (3f - 2f * t);

@@ -11,7 +11,7 @@ namespace AvatarGo.Core
     public sealed class VirtualDeviceRig
     {
         private readonly int[] _joints = new int[BodyRoles.All.Length];
-        private readonly Pose[] _deviceInJoint = new Pose[BodyRoles.All.Length];
+        private readonly RigidPose[] _deviceInJoint = new RigidPose[BodyRoles.All.Length];
 
         /// <summary>
         /// Builds the rig for the wearer's skeleton: the mountings (given in the T-pose body frame) are converted
@@ -22,16 +22,16 @@ namespace AvatarGo.Core
             Wearer = wearer ?? throw new ArgumentNullException(nameof(wearer));
             Mountings = mountings ?? throw new ArgumentNullException(nameof(mountings));
             var tpose = new SkeletonPose(wearer.Skeleton);
-            TPoser.Apply(wearer, tpose, Pose.Identity);
+            TPoser.Apply(wearer, tpose, RigidPose.Identity);
             for (int i = 0; i < BodyRoles.All.Length; i++)
             {
                 DeviceRole role = BodyRoles.All[i];
-                HumanBone bone = BodyRoles.JointOf(role);
+                HumanoidBone bone = BodyRoles.JointOf(role);
                 _joints[i] = wearer[bone];
-                Pose joint = tpose.World[_joints[i]];
-                Pose mount = mountings[role];
+                RigidPose joint = tpose.World[_joints[i]];
+                RigidPose mount = mountings[role];
                 Vector3 reference = role == DeviceRole.Head ? TPoser.EyePosition(wearer, tpose, Quaternion.Identity) : joint.Position;
-                var device = new Pose(reference + mount.Position, mount.Rotation);
+                var device = new RigidPose(reference + mount.Position, mount.Rotation);
                 _deviceInJoint[i] = device.RelativeTo(joint);
             }
         }
@@ -43,13 +43,13 @@ namespace AvatarGo.Core
         public DeviceMountings Mountings { get; }
 
         /// <summary>The true pose of a role's device in its joint's frame (what exact calibration should recover).</summary>
-        public Pose DeviceInJoint(DeviceRole role) => _deviceInJoint[IndexOf(role)];
+        public RigidPose DeviceInJoint(DeviceRole role) => _deviceInJoint[IndexOf(role)];
 
         /// <summary>
         /// Writes the device poses for the wearer's world joint poses <paramref name="world"/> into
         /// <paramref name="devices"/>, in <see cref="BodyRoles.All"/> order. Allocation-free.
         /// </summary>
-        public void Compute(ReadOnlySpan<Pose> world, Span<Pose> devices)
+        public void Compute(ReadOnlySpan<RigidPose> world, Span<RigidPose> devices)
         {
             if (devices.Length < _joints.Length) throw new ArgumentException("Six device poses are needed.", nameof(devices));
             for (int i = 0; i < _joints.Length; i++) devices[i] = world[_joints[i]] * _deviceInJoint[i];
@@ -59,7 +59,7 @@ namespace AvatarGo.Core
         /// Adds Gaussian noise: each position coordinate with standard deviation <paramref name="positionSigma"/> (m),
         /// each rotation by a random axis and a Gaussian angle of <paramref name="rotationSigmaDegrees"/>.
         /// </summary>
-        public static void AddNoise(Span<Pose> poses, Random rng, float positionSigma, float rotationSigmaDegrees)
+        public static void AddNoise(Span<RigidPose> poses, Random rng, float positionSigma, float rotationSigmaDegrees)
         {
             if (rng == null) throw new ArgumentNullException(nameof(rng));
             for (int i = 0; i < poses.Length; i++)
@@ -67,7 +67,7 @@ namespace AvatarGo.Core
                 var dp = new Vector3(Gaussian(rng), Gaussian(rng), Gaussian(rng)) * positionSigma;
                 var axis = new Vector3(Gaussian(rng), Gaussian(rng), Gaussian(rng));
                 Quaternion dq = Rotations.AngleAxis(Gaussian(rng) * rotationSigmaDegrees, axis);
-                poses[i] = new Pose(poses[i].Position + dp, Quaternion.Normalize(dq * poses[i].Rotation));
+                poses[i] = new RigidPose(poses[i].Position + dp, Quaternion.Normalize(dq * poses[i].Rotation));
             }
         }
 

@@ -30,7 +30,7 @@ namespace AvatarGo.Core
         /// <see cref="HumanoidMap.MissingRequired"/>.
         /// </summary>
         /// <exception cref="ArgumentException">An override names a joint the skeleton does not have.</exception>
-        public static HumanoidMap Detect(Skeleton skeleton, IReadOnlyDictionary<string, HumanBone> overrides = null)
+        public static HumanoidMap Detect(Skeleton skeleton, IReadOnlyDictionary<string, HumanoidBone> overrides = null)
         {
             if (skeleton == null) throw new ArgumentNullException(nameof(skeleton));
             int n = skeleton.JointCount;
@@ -38,7 +38,7 @@ namespace AvatarGo.Core
             var cores = new string[n];
             for (int j = 0; j < n; j++) Normalise(skeleton.GetName(j), out sides[j], out cores[j]);
 
-            var bones = new Dictionary<HumanBone, int>();
+            var bones = new Dictionary<HumanoidBone, int>();
             var used = new HashSet<int>();
             if (overrides != null)
             {
@@ -51,7 +51,7 @@ namespace AvatarGo.Core
                 }
             }
 
-            void Put(HumanBone bone, int joint)
+            void Put(HumanoidBone bone, int joint)
             {
                 if (joint < 0 || bones.ContainsKey(bone) || used.Contains(joint)) return;
                 bones[bone] = joint;
@@ -61,8 +61,8 @@ namespace AvatarGo.Core
             // Hips: an unsided hips/pelvis joint, else the first root with children.
             int hips = Find(skeleton, cores, sides, Side.None, -1, "hips", "pelvis", "hip");
             if (hips < 0) hips = 0;
-            Put(HumanBone.Hips, hips);
-            hips = bones.TryGetValue(HumanBone.Hips, out int h) ? h : hips;
+            Put(HumanoidBone.Hips, hips);
+            hips = bones.TryGetValue(HumanoidBone.Hips, out int h) ? h : hips;
 
             foreach (Side side in new[] { Side.Left, Side.Right })
             {
@@ -73,10 +73,10 @@ namespace AvatarGo.Core
                 int foot = Find(skeleton, cores, sides, side, lowLeg, "foot", "ankle");
                 int toes = Find(skeleton, cores, sides, side, foot, "toebase", "toe", "toes", "ball");
                 if (foot < 0) foot = EndSiteOf(skeleton, lowLeg);
-                Put(left ? HumanBone.LeftUpperLeg : HumanBone.RightUpperLeg, upLeg);
-                Put(left ? HumanBone.LeftLowerLeg : HumanBone.RightLowerLeg, lowLeg);
-                Put(left ? HumanBone.LeftFoot : HumanBone.RightFoot, foot);
-                if (toes >= 0 && !skeleton.IsEndSite(toes)) Put(left ? HumanBone.LeftToes : HumanBone.RightToes, toes);
+                Put(left ? HumanoidBone.LeftUpperLeg : HumanoidBone.RightUpperLeg, upLeg);
+                Put(left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg, lowLeg);
+                Put(left ? HumanoidBone.LeftFoot : HumanoidBone.RightFoot, foot);
+                if (toes >= 0 && !skeleton.IsEndSite(toes)) Put(left ? HumanoidBone.LeftToes : HumanoidBone.RightToes, toes);
 
                 // Arms: is "shoulder" the clavicle or the upper arm on this side?
                 bool hasArm = FindAnywhere(cores, sides, side, "arm", "upperarm", "uparm") >= 0;
@@ -89,10 +89,10 @@ namespace AvatarGo.Core
                 int foreArm = Find(skeleton, cores, sides, side, upArm, "forearm", "lowerarm", "elbow", "radius");
                 int hand = Find(skeleton, cores, sides, side, foreArm, "hand", "wrist");
                 if (hand < 0) hand = EndSiteOf(skeleton, foreArm);
-                Put(left ? HumanBone.LeftShoulder : HumanBone.RightShoulder, clavicle);
-                Put(left ? HumanBone.LeftUpperArm : HumanBone.RightUpperArm, upArm);
-                Put(left ? HumanBone.LeftLowerArm : HumanBone.RightLowerArm, foreArm);
-                Put(left ? HumanBone.LeftHand : HumanBone.RightHand, hand);
+                Put(left ? HumanoidBone.LeftShoulder : HumanoidBone.RightShoulder, clavicle);
+                Put(left ? HumanoidBone.LeftUpperArm : HumanoidBone.RightUpperArm, upArm);
+                Put(left ? HumanoidBone.LeftLowerArm : HumanoidBone.RightLowerArm, foreArm);
+                Put(left ? HumanoidBone.LeftHand : HumanoidBone.RightHand, hand);
 
                 // Fingers: three phalanges per finger, below the hand.
                 if (hand >= 0 && !skeleton.IsEndSite(hand))
@@ -108,14 +108,14 @@ namespace AvatarGo.Core
                         {
                             int joint = FindFinger(skeleton, cores, sides, side, parent, fingerNames[f], phalanx + 1);
                             if (joint < 0) break;
-                            Put(HumanBones.Finger(left, f, phalanx), joint);
+                            Put(HumanoidBones.Finger(left, f, phalanx), joint);
                             parent = joint;
                         }
                     }
                 }
 
                 int eye = Find(skeleton, cores, sides, side, hips, "eye");
-                if (eye >= 0 && !skeleton.IsEndSite(eye)) Put(left ? HumanBone.LeftEye : HumanBone.RightEye, eye);
+                if (eye >= 0 && !skeleton.IsEndSite(eye)) Put(left ? HumanoidBone.LeftEye : HumanoidBone.RightEye, eye);
             }
 
             // Neck and head.
@@ -123,28 +123,28 @@ namespace AvatarGo.Core
             int head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "head");
             if (head < 0) head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "face");
             if (head < 0 && neck >= 0) head = EndSiteOf(skeleton, neck);
-            Put(HumanBone.Neck, neck);
-            Put(HumanBone.Head, head);
+            Put(HumanoidBone.Neck, neck);
+            Put(HumanoidBone.Head, head);
             int jaw = Find(skeleton, cores, sides, Side.None, head, "jaw");
-            if (jaw >= 0 && !skeleton.IsEndSite(jaw)) Put(HumanBone.Jaw, jaw);
+            if (jaw >= 0 && !skeleton.IsEndSite(jaw)) Put(HumanoidBone.Jaw, jaw);
 
             // Spine chain: unsided joints strictly between the hips and the neck (or the arms' attachment).
             int top = neck >= 0 ? skeleton.GetParent(neck)
-                : bones.TryGetValue(HumanBone.LeftUpperArm, out int la) ? skeleton.GetParent(la)
+                : bones.TryGetValue(HumanoidBone.LeftUpperArm, out int la) ? skeleton.GetParent(la)
                 : head >= 0 ? skeleton.GetParent(head) : -1;
-            if (bones.TryGetValue(HumanBone.LeftShoulder, out int ls)) top = CommonAncestor(skeleton, top, skeleton.GetParent(ls));
+            if (bones.TryGetValue(HumanoidBone.LeftShoulder, out int ls)) top = CommonAncestor(skeleton, top, skeleton.GetParent(ls));
             var chain = new List<int>();
             for (int j = top; j >= 0 && j != hips; j = skeleton.GetParent(j))
                 if (!used.Contains(j) && sides[j] == Side.None && !skeleton.IsEndSite(j)) chain.Insert(0, j);
             if (chain.Count > 0 && skeleton.IsAncestorOrSelf(hips, chain[0]))
             {
-                Put(HumanBone.Spine, chain[0]);
-                if (chain.Count > 1) Put(HumanBone.Chest, chain[1]);
-                if (chain.Count > 2) Put(HumanBone.UpperChest, chain[chain.Count - 1]);
+                Put(HumanoidBone.Spine, chain[0]);
+                if (chain.Count > 1) Put(HumanoidBone.Chest, chain[1]);
+                if (chain.Count > 2) Put(HumanoidBone.UpperChest, chain[chain.Count - 1]);
             }
 
-            var pairs = new List<KeyValuePair<HumanBone, string>>();
-            foreach (var pair in bones) pairs.Add(new KeyValuePair<HumanBone, string>(pair.Key, skeleton.GetName(pair.Value)));
+            var pairs = new List<KeyValuePair<HumanoidBone, string>>();
+            foreach (var pair in bones) pairs.Add(new KeyValuePair<HumanoidBone, string>(pair.Key, skeleton.GetName(pair.Value)));
             return new HumanoidMap(skeleton, pairs);
         }
 

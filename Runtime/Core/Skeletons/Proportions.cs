@@ -15,19 +15,19 @@ namespace AvatarGo.Core
             if (map == null) throw new ArgumentNullException(nameof(map));
             if (!(legScale > 0f) || !(armScale > 0f)) throw new ArgumentOutOfRangeException(nameof(legScale), "Scales must be positive.");
             Skeleton s = map.Skeleton;
-            var rest = new Pose[s.JointCount];
+            var rest = new RigidPose[s.JointCount];
             for (int j = 0; j < rest.Length; j++) rest[j] = s.GetRestLocal(j);
-            void Scale(HumanBone bone, float factor)
+            void Scale(HumanoidBone bone, float factor)
             {
                 int j = map[bone];
                 if (j >= 0) rest[j] = rest[j].WithPosition(rest[j].Position * factor);
             }
             foreach (bool left in new[] { true, false })
             {
-                Scale(left ? HumanBone.LeftLowerLeg : HumanBone.RightLowerLeg, legScale);
-                Scale(left ? HumanBone.LeftFoot : HumanBone.RightFoot, legScale);
-                Scale(left ? HumanBone.LeftLowerArm : HumanBone.RightLowerArm, armScale);
-                Scale(left ? HumanBone.LeftHand : HumanBone.RightHand, armScale);
+                Scale(left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg, legScale);
+                Scale(left ? HumanoidBone.LeftFoot : HumanoidBone.RightFoot, legScale);
+                Scale(left ? HumanoidBone.LeftLowerArm : HumanoidBone.RightLowerArm, armScale);
+                Scale(left ? HumanoidBone.LeftHand : HumanoidBone.RightHand, armScale);
             }
             var parents = new int[s.JointCount];
             var ends = new bool[s.JointCount];
@@ -36,7 +36,7 @@ namespace AvatarGo.Core
                 parents[j] = s.GetParent(j);
                 ends[j] = s.IsEndSite(j);
             }
-            return new HumanoidMap(new Skeleton(s.Names, parents, rest, ends), new List<KeyValuePair<HumanBone, string>>(map.Pairs()));
+            return new HumanoidMap(new Skeleton(s.Names, parents, rest, ends), new List<KeyValuePair<HumanoidBone, string>>(map.Pairs()));
         }
     }
 }

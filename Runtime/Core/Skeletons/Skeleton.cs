@@ -13,7 +13,7 @@ namespace AvatarGo.Core
     {
         private readonly string[] _names;
         private readonly int[] _parents;
-        private readonly Pose[] _restLocal;
+        private readonly RigidPose[] _restLocal;
         private readonly bool[] _isEndSite;
         private readonly Dictionary<string, int> _indexByName;
 
@@ -23,7 +23,7 @@ namespace AvatarGo.Core
         /// </summary>
         /// <exception cref="ArgumentException">The arrays differ in length, a parent does not precede its child,
         /// a name is empty or used twice, or a rest pose is not finite.</exception>
-        public Skeleton(IReadOnlyList<string> names, IReadOnlyList<int> parents, IReadOnlyList<Pose> restLocal,
+        public Skeleton(IReadOnlyList<string> names, IReadOnlyList<int> parents, IReadOnlyList<RigidPose> restLocal,
             IReadOnlyList<bool> isEndSite = null)
         {
             if (names == null) throw new ArgumentNullException(nameof(names));
@@ -36,7 +36,7 @@ namespace AvatarGo.Core
 
             _names = new string[n];
             _parents = new int[n];
-            _restLocal = new Pose[n];
+            _restLocal = new RigidPose[n];
             _isEndSite = new bool[n];
             _indexByName = new Dictionary<string, int>(n, StringComparer.Ordinal);
             for (int i = 0; i < n; i++)
@@ -51,7 +51,7 @@ namespace AvatarGo.Core
                     throw new ArgumentException($"Joint '{name}' has a non-finite rest pose.", nameof(restLocal));
                 _names[i] = name;
                 _parents[i] = parent;
-                _restLocal[i] = new Pose(restLocal[i].Position, Rotations.NormalizeOr(restLocal[i].Rotation, Quaternion.Identity));
+                _restLocal[i] = new RigidPose(restLocal[i].Position, Rotations.NormalizeOr(restLocal[i].Rotation, Quaternion.Identity));
                 _isEndSite[i] = isEndSite != null && isEndSite[i];
                 _indexByName.Add(name, i);
             }
@@ -70,7 +70,7 @@ namespace AvatarGo.Core
         public int GetParent(int joint) => _parents[joint];
 
         /// <summary>The rest (bind) transform of joint <paramref name="joint"/> relative to its parent.</summary>
-        public Pose GetRestLocal(int joint) => _restLocal[joint];
+        public RigidPose GetRestLocal(int joint) => _restLocal[joint];
 
         /// <summary>True when the joint is an end point with no rotation of its own (a BVH End Site).</summary>
         public bool IsEndSite(int joint) => _isEndSite[joint];
@@ -87,7 +87,7 @@ namespace AvatarGo.Core
         }
 
         /// <summary>Copies the rest local transforms into <paramref name="local"/>.</summary>
-        public void GetRestLocal(Span<Pose> local)
+        public void GetRestLocal(Span<RigidPose> local)
         {
             CheckLength(local.Length);
             _restLocal.AsSpan().CopyTo(local);
@@ -97,7 +97,7 @@ namespace AvatarGo.Core
         /// Forward kinematics: world transforms from local ones, the roots placed under <paramref name="origin"/>.
         /// Allocation-free.
         /// </summary>
-        public void ComputeWorld(ReadOnlySpan<Pose> local, Span<Pose> world, Pose origin)
+        public void ComputeWorld(ReadOnlySpan<RigidPose> local, Span<RigidPose> world, RigidPose origin)
         {
             CheckLength(local.Length);
             CheckLength(world.Length);
@@ -109,12 +109,12 @@ namespace AvatarGo.Core
         }
 
         /// <summary>Forward kinematics with the roots at the world origin.</summary>
-        public void ComputeWorld(ReadOnlySpan<Pose> local, Span<Pose> world) => ComputeWorld(local, world, Pose.Identity);
+        public void ComputeWorld(ReadOnlySpan<RigidPose> local, Span<RigidPose> world) => ComputeWorld(local, world, RigidPose.Identity);
 
         /// <summary>
-        /// Inverse of <see cref="ComputeWorld(ReadOnlySpan{Pose}, Span{Pose}, Pose)"/>: local transforms from world ones.
+        /// Inverse of <see cref="ComputeWorld(ReadOnlySpan{RigidPose}, Span{RigidPose}, RigidPose)"/>: local transforms from world ones.
         /// </summary>
-        public void ComputeLocal(ReadOnlySpan<Pose> world, Span<Pose> local, Pose origin)
+        public void ComputeLocal(ReadOnlySpan<RigidPose> world, Span<RigidPose> local, RigidPose origin)
         {
             CheckLength(local.Length);
             CheckLength(world.Length);
@@ -129,13 +129,13 @@ namespace AvatarGo.Core
         public Skeleton Scaled(float scale)
         {
             if (!(scale > 0f) || !Vectors.IsFinite(scale)) throw new ArgumentOutOfRangeException(nameof(scale), scale, "Scale must be positive and finite.");
-            var rest = new Pose[_restLocal.Length];
+            var rest = new RigidPose[_restLocal.Length];
             for (int i = 0; i < rest.Length; i++) rest[i] = _restLocal[i].Scaled(scale);
             return new Skeleton(_names, _parents, rest, _isEndSite);
         }
 
         /// <summary>A copy of this skeleton with other rest local transforms (same names and hierarchy).</summary>
-        public Skeleton WithRestLocal(IReadOnlyList<Pose> restLocal) => new Skeleton(_names, _parents, restLocal, _isEndSite);
+        public Skeleton WithRestLocal(IReadOnlyList<RigidPose> restLocal) => new Skeleton(_names, _parents, restLocal, _isEndSite);
 
         private void CheckLength(int length)
         {

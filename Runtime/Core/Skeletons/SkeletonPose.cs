@@ -12,20 +12,20 @@ namespace AvatarGo.Core
         public Skeleton Skeleton { get; }
 
         /// <summary>Local transforms, one per joint, relative to the parent (roots: relative to <see cref="Origin"/>).</summary>
-        public Pose[] Local { get; }
+        public RigidPose[] Local { get; }
 
         /// <summary>World transforms, valid after <see cref="UpdateWorld()"/>.</summary>
-        public Pose[] World { get; }
+        public RigidPose[] World { get; }
 
         /// <summary>The frame the roots are expressed in (identity: world).</summary>
-        public Pose Origin { get; set; } = Pose.Identity;
+        public RigidPose Origin { get; set; } = RigidPose.Identity;
 
         /// <summary>Creates a pose buffer set to the skeleton's rest pose.</summary>
         public SkeletonPose(Skeleton skeleton)
         {
             Skeleton = skeleton ?? throw new ArgumentNullException(nameof(skeleton));
-            Local = new Pose[skeleton.JointCount];
-            World = new Pose[skeleton.JointCount];
+            Local = new RigidPose[skeleton.JointCount];
+            World = new RigidPose[skeleton.JointCount];
             ResetToRest();
         }
 

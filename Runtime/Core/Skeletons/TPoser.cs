@@ -7,7 +7,7 @@ namespace AvatarGo.Core
     /// Brings any humanoid skeleton (T-pose, A-pose or any bind pose) to a canonical T-pose: spine and neck
     /// straight up, legs straight down, arms and hands horizontal along the body's left/right, facing +Z,
     /// the lowest point of the legs on the floor (y = 0), the hips above the origin — then placed at a floor
-    /// position and facing given by a <see cref="Pose"/> (its rotation should be a yaw).
+    /// position and facing given by a <see cref="RigidPose"/> (its rotation should be a yaw).
     /// </summary>
     /// <remarks>
     /// Each limb segment is turned by the smallest rotation that takes it onto its target direction, parents
@@ -18,26 +18,26 @@ namespace AvatarGo.Core
     {
         /// <summary>Poses <paramref name="pose"/> (a pose buffer of <paramref name="map"/>'s skeleton) in the canonical T-pose at <paramref name="placement"/>.</summary>
         /// <exception cref="ArgumentException">The rig lacks a required humanoid bone.</exception>
-        public static void Apply(HumanoidMap map, SkeletonPose pose, Pose placement)
+        public static void Apply(HumanoidMap map, SkeletonPose pose, RigidPose placement)
         {
             if (map == null) throw new ArgumentNullException(nameof(map));
             if (pose == null || pose.Skeleton != map.Skeleton) throw new ArgumentException("The pose must belong to the map's skeleton.", nameof(pose));
             var missing = map.MissingRequired();
             if (missing.Count > 0) throw new ArgumentException($"The rig lacks required bones: {string.Join(", ", missing)}.", nameof(map));
             Skeleton s = map.Skeleton;
-            pose.Origin = Pose.Identity;
+            pose.Origin = RigidPose.Identity;
             pose.ResetToRest();
-            Pose[] w = pose.World;
+            RigidPose[] w = pose.World;
 
             // 1. Turn the whole body so that it faces +Z with its spine along +Y.
-            Vector3 right = w[map[HumanBone.RightUpperLeg]].Position - w[map[HumanBone.LeftUpperLeg]].Position;
-            if (right.LengthSquared() < 1e-8f) right = w[map[HumanBone.RightUpperArm]].Position - w[map[HumanBone.LeftUpperArm]].Position;
-            Vector3 up = w[map[HumanBone.Head]].Position - w[map[HumanBone.Hips]].Position;
+            Vector3 right = w[map[HumanoidBone.RightUpperLeg]].Position - w[map[HumanoidBone.LeftUpperLeg]].Position;
+            if (right.LengthSquared() < 1e-8f) right = w[map[HumanoidBone.RightUpperArm]].Position - w[map[HumanoidBone.LeftUpperArm]].Position;
+            Vector3 up = w[map[HumanoidBone.Head]].Position - w[map[HumanoidBone.Hips]].Position;
             Quaternion body = Rotations.LookRotation(Vector3.Cross(right, up), up);
             RotateRoots(pose, Quaternion.Conjugate(body));
 
             // 2. Straighten the chains.
-            HumanBone[] spine = { HumanBone.Spine, HumanBone.Chest, HumanBone.UpperChest, HumanBone.Neck, HumanBone.Head };
+            HumanoidBone[] spine = { HumanoidBone.Spine, HumanoidBone.Chest, HumanoidBone.UpperChest, HumanoidBone.Neck, HumanoidBone.Head };
             for (int i = 0; i < spine.Length - 1; i++)
             {
                 if (!map.Has(spine[i])) continue;
@@ -47,22 +47,22 @@ namespace AvatarGo.Core
             foreach (bool left in new[] { true, false })
             {
                 Vector3 outward = left ? -Vector3.UnitX : Vector3.UnitX;
-                Align(map, pose, left ? HumanBone.LeftUpperLeg : HumanBone.RightUpperLeg, left ? HumanBone.LeftLowerLeg : HumanBone.RightLowerLeg, -Vector3.UnitY);
-                Align(map, pose, left ? HumanBone.LeftLowerLeg : HumanBone.RightLowerLeg, left ? HumanBone.LeftFoot : HumanBone.RightFoot, -Vector3.UnitY);
-                Align(map, pose, left ? HumanBone.LeftUpperArm : HumanBone.RightUpperArm, left ? HumanBone.LeftLowerArm : HumanBone.RightLowerArm, outward);
-                Align(map, pose, left ? HumanBone.LeftLowerArm : HumanBone.RightLowerArm, left ? HumanBone.LeftHand : HumanBone.RightHand, outward);
-                Align(map, pose, left ? HumanBone.LeftHand : HumanBone.RightHand, left ? HumanBone.LeftMiddleProximal : HumanBone.RightMiddleProximal, outward);
+                Align(map, pose, left ? HumanoidBone.LeftUpperLeg : HumanoidBone.RightUpperLeg, left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg, -Vector3.UnitY);
+                Align(map, pose, left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg, left ? HumanoidBone.LeftFoot : HumanoidBone.RightFoot, -Vector3.UnitY);
+                Align(map, pose, left ? HumanoidBone.LeftUpperArm : HumanoidBone.RightUpperArm, left ? HumanoidBone.LeftLowerArm : HumanoidBone.RightLowerArm, outward);
+                Align(map, pose, left ? HumanoidBone.LeftLowerArm : HumanoidBone.RightLowerArm, left ? HumanoidBone.LeftHand : HumanoidBone.RightHand, outward);
+                Align(map, pose, left ? HumanoidBone.LeftHand : HumanoidBone.RightHand, left ? HumanoidBone.LeftMiddleProximal : HumanoidBone.RightMiddleProximal, outward);
             }
 
             // 3. Stand on the floor, hips above the origin, then place.
             float floor = float.MaxValue;
-            int leftLeg = map[HumanBone.LeftUpperLeg], rightLeg = map[HumanBone.RightUpperLeg];
+            int leftLeg = map[HumanoidBone.LeftUpperLeg], rightLeg = map[HumanoidBone.RightUpperLeg];
             for (int j = 0; j < s.JointCount; j++)
                 if (s.IsAncestorOrSelf(leftLeg, j) || s.IsAncestorOrSelf(rightLeg, j)) floor = Math.Min(floor, w[j].Position.Y);
-            Vector3 hips = w[map[HumanBone.Hips]].Position;
+            Vector3 hips = w[map[HumanoidBone.Hips]].Position;
             Vector3 shift = new Vector3(-hips.X, -floor, -hips.Z);
             for (int j = 0; j < s.JointCount; j++)
-                if (s.GetParent(j) < 0) pose.Local[j] = placement * new Pose(pose.Local[j].Position + shift, pose.Local[j].Rotation);
+                if (s.GetParent(j) < 0) pose.Local[j] = placement * new RigidPose(pose.Local[j].Position + shift, pose.Local[j].Rotation);
             pose.UpdateWorld();
         }
 
@@ -72,9 +72,9 @@ namespace AvatarGo.Core
         /// </summary>
         public static Vector3 EyePosition(HumanoidMap map, SkeletonPose pose, Quaternion bodyRotation)
         {
-            if (map.Has(HumanBone.LeftEye) && map.Has(HumanBone.RightEye))
-                return (pose.World[map[HumanBone.LeftEye]].Position + pose.World[map[HumanBone.RightEye]].Position) * 0.5f;
-            return pose.World[map[HumanBone.Head]].Position + Vector3.Transform(HeadToEyes, bodyRotation);
+            if (map.Has(HumanoidBone.LeftEye) && map.Has(HumanoidBone.RightEye))
+                return (pose.World[map[HumanoidBone.LeftEye]].Position + pose.World[map[HumanoidBone.RightEye]].Position) * 0.5f;
+            return pose.World[map[HumanoidBone.Head]].Position + Vector3.Transform(HeadToEyes, bodyRotation);
         }
 
         /// <summary>
@@ -89,11 +89,11 @@ namespace AvatarGo.Core
             Skeleton s = pose.Skeleton;
             for (int j = 0; j < s.JointCount; j++)
                 if (s.GetParent(j) < 0)
-                    pose.Local[j] = new Pose(Vector3.Transform(pose.Local[j].Position, rotation), Quaternion.Normalize(rotation * pose.Local[j].Rotation));
+                    pose.Local[j] = new RigidPose(Vector3.Transform(pose.Local[j].Position, rotation), Quaternion.Normalize(rotation * pose.Local[j].Rotation));
             pose.UpdateWorld();
         }
 
-        private static void Align(HumanoidMap map, SkeletonPose pose, HumanBone bone, HumanBone child, Vector3 direction)
+        private static void Align(HumanoidMap map, SkeletonPose pose, HumanoidBone bone, HumanoidBone child, Vector3 direction)
         {
             int j = map[bone], c = map[child];
             if (j < 0 || c < 0) return;

@@ -19,7 +19,7 @@ namespace AvatarGo.Core
     public sealed class BodySolver
     {
         private readonly int[] _deviceIndex = new int[7];
-        private readonly Pose[] _jointInDevice = new Pose[7];
+        private readonly RigidPose[] _jointInDevice = new RigidPose[7];
         private readonly Vector3 _rootToHead0;
         private readonly Quaternion _hipsRotation0;
         private readonly Vector3[] _kneeInFoot = new Vector3[2];
@@ -44,23 +44,23 @@ namespace AvatarGo.Core
                 if (_deviceIndex[(int)role] < 0) throw new ArgumentException($"No device has the id calibrated for {role}.", nameof(devices));
                 _jointInDevice[(int)role] = profile.JointInDevice(role);
             }
-            Pose[] w = calibrationPose.World;
-            Pose hips = w[avatar[HumanBone.Hips]];
+            RigidPose[] w = calibrationPose.World;
+            RigidPose hips = w[avatar[HumanoidBone.Hips]];
             _hipsRotation0 = hips.Rotation;
-            _rootToHead0 = w[avatar[HumanBone.Head]].Position - hips.Position;
+            _rootToHead0 = w[avatar[HumanoidBone.Head]].Position - hips.Position;
             Vector3 forward = Vector3.Transform(Vector3.UnitZ, profile.Placement.Rotation);
             Vector3 down = -Vector3.UnitY;
             for (int side = 0; side < 2; side++)
             {
                 bool left = side == 0;
-                Pose foot = w[avatar[left ? HumanBone.LeftFoot : HumanBone.RightFoot]];
-                Pose hand = w[avatar[left ? HumanBone.LeftHand : HumanBone.RightHand]];
+                RigidPose foot = w[avatar[left ? HumanoidBone.LeftFoot : HumanoidBone.RightFoot]];
+                RigidPose hand = w[avatar[left ? HumanoidBone.LeftHand : HumanoidBone.RightHand]];
                 // Hints: where the knee (elbow) was relative to the foot (hand) at calibration, pushed the way it
                 // bends (knees forward; elbows back and down, as from a T-pose with the palms down), so the hint
                 // is never on the hip-ankle (shoulder-wrist) line. The ankle's and wrist's limited range keeps the
                 // shin's and forearm's direction close to what the foot and hand say.
-                Vector3 knee = w[avatar[left ? HumanBone.LeftLowerLeg : HumanBone.RightLowerLeg]].Position;
-                Vector3 elbow = w[avatar[left ? HumanBone.LeftLowerArm : HumanBone.RightLowerArm]].Position;
+                Vector3 knee = w[avatar[left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg]].Position;
+                Vector3 elbow = w[avatar[left ? HumanoidBone.LeftLowerArm : HumanoidBone.RightLowerArm]].Position;
                 float leg = Vector3.Distance(knee, foot.Position), arm = Vector3.Distance(elbow, hand.Position);
                 _kneeInFoot[side] = foot.InverseTransformPoint(knee + forward * leg);
                 _elbowInHand[side] = hand.InverseTransformPoint(elbow + Vector3.Normalize(-forward + 0.5f * down) * arm);
@@ -88,12 +88,12 @@ namespace AvatarGo.Core
             Limb(samples, DeviceRole.RightHand, 1, _elbowInHand, ref targets.RightHand);
         }
 
-        private bool Joint(ReadOnlySpan<DeviceSample> samples, DeviceRole role, out Pose joint)
+        private bool Joint(ReadOnlySpan<DeviceSample> samples, DeviceRole role, out RigidPose joint)
         {
             DeviceSample s = samples[_deviceIndex[(int)role]];
             if (!s.IsUsable)
             {
-                joint = Pose.Identity;
+                joint = RigidPose.Identity;
                 return false;
             }
             joint = s.Pose * _jointInDevice[(int)role];

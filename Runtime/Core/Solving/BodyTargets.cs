@@ -10,13 +10,13 @@ namespace AvatarGo.Core
     public struct BodyTargets
     {
         /// <summary>World pose of the Hips joint (the avatar's root), from the pelvis tracker.</summary>
-        public Pose Hips;
+        public RigidPose Hips;
 
         /// <summary>False when the pelvis tracker is not tracked this frame: the root keeps its last pose.</summary>
         public bool HipsActive;
 
         /// <summary>World pose of the Head joint: the position the spine bends toward, the rotation from the HMD.</summary>
-        public Pose Head;
+        public RigidPose Head;
 
         /// <summary>False when the HMD is not tracked this frame.</summary>
         public bool HeadActive;

@@ -58,10 +58,10 @@ namespace AvatarGo.Core
             var missing = map.MissingRequired();
             if (missing.Count > 0) throw new ArgumentException($"The rig lacks required bones: {string.Join(", ", missing)}.", nameof(map));
             Skeleton s = map.Skeleton;
-            _hips = map[HumanBone.Hips];
-            _head = map[HumanBone.Head];
+            _hips = map[HumanoidBone.Hips];
+            _head = map[HumanoidBone.Head];
             var spine = new List<int>();
-            foreach (HumanBone b in new[] { HumanBone.Spine, HumanBone.Chest, HumanBone.UpperChest, HumanBone.Neck })
+            foreach (HumanoidBone b in new[] { HumanoidBone.Spine, HumanoidBone.Chest, HumanoidBone.UpperChest, HumanoidBone.Neck })
                 if (map.Has(b) && s.IsAncestorOrSelf(map[b], _head)) spine.Add(map[b]);
             _spine = spine.ToArray();
             var path = new List<int>();
@@ -72,23 +72,23 @@ namespace AvatarGo.Core
             _spineReference = new Quaternion[_spine.Length];
             for (int i = 0; i < _spine.Length; i++)
                 _spineReference[i] = reference != null ? reference.Local[_spine[i]].Rotation : s.GetRestLocal(_spine[i]).Rotation;
-            if (_spine.Length >= 2 && _spine[_spine.Length - 1] == map[HumanBone.Neck])
+            if (_spine.Length >= 2 && _spine[_spine.Length - 1] == map[HumanoidBone.Neck])
             {
-                var refLocal = new Pose[s.JointCount];
+                var refLocal = new RigidPose[s.JointCount];
                 if (reference != null) Array.Copy(reference.Local, refLocal, refLocal.Length); else s.GetRestLocal(refLocal);
-                var refWorld = new Pose[s.JointCount];
+                var refWorld = new RigidPose[s.JointCount];
                 s.ComputeWorld(refLocal, refWorld);
                 _neck = _spine[_spine.Length - 1];
                 _neckInHead = refWorld[_head].InverseTransformPoint(refWorld[_neck].Position);
             }
-            _leftLeg = new LimbChain(s, map[HumanBone.LeftUpperLeg], map[HumanBone.LeftLowerLeg], map[HumanBone.LeftFoot]);
-            _rightLeg = new LimbChain(s, map[HumanBone.RightUpperLeg], map[HumanBone.RightLowerLeg], map[HumanBone.RightFoot]);
-            _leftClavicle = map[HumanBone.LeftShoulder];
-            _rightClavicle = map[HumanBone.RightShoulder];
+            _leftLeg = new LimbChain(s, map[HumanoidBone.LeftUpperLeg], map[HumanoidBone.LeftLowerLeg], map[HumanoidBone.LeftFoot]);
+            _rightLeg = new LimbChain(s, map[HumanoidBone.RightUpperLeg], map[HumanoidBone.RightLowerLeg], map[HumanoidBone.RightFoot]);
+            _leftClavicle = map[HumanoidBone.LeftShoulder];
+            _rightClavicle = map[HumanoidBone.RightShoulder];
             _leftClavicleReference = _leftClavicle < 0 ? Quaternion.Identity : reference != null ? reference.Local[_leftClavicle].Rotation : s.GetRestLocal(_leftClavicle).Rotation;
             _rightClavicleReference = _rightClavicle < 0 ? Quaternion.Identity : reference != null ? reference.Local[_rightClavicle].Rotation : s.GetRestLocal(_rightClavicle).Rotation;
-            _leftArm = new LimbChain(s, map[HumanBone.LeftUpperArm], map[HumanBone.LeftLowerArm], map[HumanBone.LeftHand]);
-            _rightArm = new LimbChain(s, map[HumanBone.RightUpperArm], map[HumanBone.RightLowerArm], map[HumanBone.RightHand]);
+            _leftArm = new LimbChain(s, map[HumanoidBone.LeftUpperArm], map[HumanoidBone.LeftLowerArm], map[HumanoidBone.LeftHand]);
+            _rightArm = new LimbChain(s, map[HumanoidBone.RightUpperArm], map[HumanoidBone.RightLowerArm], map[HumanoidBone.RightHand]);
         }
 
         /// <summary>The avatar's humanoid map.</summary>
@@ -102,7 +102,7 @@ namespace AvatarGo.Core
         {
             if (pose == null) throw new ArgumentNullException(nameof(pose));
             var report = new IkReport();
-            Pose[] w = pose.World;
+            RigidPose[] w = pose.World;
             if (targets.HipsActive && targets.Hips.IsValid) SetWorld(pose, _hips, targets.Hips);
             pose.UpdateWorld();
 
@@ -138,9 +138,9 @@ namespace AvatarGo.Core
         // (a smooth curve rather than a fold at one joint); φ starts at α/n and is refined by the secant method
         // until the first spine joint to head distance is the target's (the curve's chord); then one swing at the
         // first spine joint aims the head at its target. Exact to 0.1 mm when the spine can reach.
-        private void SolveSpine(SkeletonPose pose, Quaternion spineBend, Pose head, bool toNeck, Vector3 neckTarget)
+        private void SolveSpine(SkeletonPose pose, Quaternion spineBend, RigidPose head, bool toNeck, Vector3 neckTarget)
         {
-            Pose[] w = pose.World;
+            RigidPose[] w = pose.World;
             Vector3 headTarget = head.Position;
             int count = _spine.Length, end = _head;
             Vector3 endTarget = headTarget;
@@ -247,7 +247,7 @@ namespace AvatarGo.Core
             return parent < 0 ? pose.Origin.Rotation : pose.World[parent].Rotation;
         }
 
-        private static void SetWorld(SkeletonPose pose, int joint, Pose world)
+        private static void SetWorld(SkeletonPose pose, int joint, RigidPose world)
         {
             int parent = pose.Skeleton.GetParent(joint);
             pose.Local[joint] = world.RelativeTo(parent < 0 ? pose.Origin : pose.World[parent]);

@@ -9,7 +9,7 @@ namespace AvatarGo.Core
     public struct LimbTarget
     {
         /// <summary>World pose the end joint (ankle, wrist) should take.</summary>
-        public Pose Goal;
+        public RigidPose Goal;
 
         /// <summary>World position the middle joint (knee, elbow) should bend toward.</summary>
         public Vector3 Hint;
@@ -18,7 +18,7 @@ namespace AvatarGo.Core
         public bool IsActive;
 
         /// <summary>Creates an active limb target.</summary>
-        public LimbTarget(Pose goal, Vector3 hint)
+        public LimbTarget(RigidPose goal, Vector3 hint)
         {
             Goal = goal;
             Hint = hint;

@@ -41,11 +41,11 @@ namespace AvatarGo.Core
         /// <param name="goal">World pose for the end joint.</param>
         /// <param name="hint">World position the middle joint should bend toward.</param>
         /// <returns>Whether the end joint reached the goal (within <see cref="ReachedTolerance"/>) and how far it is from it.</returns>
-        public static LimbResult Solve(SkeletonPose pose, LimbChain chain, Pose goal, Vector3 hint)
+        public static LimbResult Solve(SkeletonPose pose, LimbChain chain, RigidPose goal, Vector3 hint)
         {
             if (pose == null) throw new ArgumentNullException(nameof(pose));
             if (chain == null) throw new ArgumentNullException(nameof(chain));
-            Pose[] w = pose.World;
+            RigidPose[] w = pose.World;
             UpdatePath(pose, chain, 0);
             if (!Vectors.IsFinite(goal.Position)) return new LimbResult(false, float.PositiveInfinity);
             int middleIndex = IndexInPath(chain, chain.Middle);
@@ -143,7 +143,7 @@ namespace AvatarGo.Core
         /// <summary>Applies a world-space rotation <paramref name="delta"/> to the chain's joint at <paramref name="pathIndex"/> and refreshes the chain below it.</summary>
         private static void RotateJoint(SkeletonPose pose, LimbChain chain, int pathIndex, Quaternion delta)
         {
-            Pose[] w = pose.World;
+            RigidPose[] w = pose.World;
             int joint = chain.Path[pathIndex];
             int parent = pose.Skeleton.GetParent(joint);
             Quaternion parentRotation = parent < 0 ? pose.Origin.Rotation : w[parent].Rotation;

@@ -11,7 +11,7 @@ namespace AvatarGo.Core.Tests
         {
             wearer = new Wearer("mocapbank_30fps.bvh", 31);
             var calibrator = new Calibrator(wearer.Devices, wearer.Map);
-            wearer.StandInTPose(new Pose(new Vector3(-1, 0, 0.5f), Rotations.AngleAxis(130f, Vector3.UnitY)));
+            wearer.StandInTPose(new RigidPose(new Vector3(-1, 0, 0.5f), Rotations.AngleAxis(130f, Vector3.UnitY)));
             double t = 0;
             wearer.HoldAndPress(calibrator, ref t, 0.001f, 0.1f);
             wearer.StandInTPose(calibrator.Profile.Placement);

@@ -6,8 +6,8 @@ namespace AvatarGo.Core.Tests
 {
     public class CalibratorTests
     {
-        private static Pose RandomPlacement(Random rng, int facing) =>
-            new Pose(new Vector3((float)rng.NextDouble() * 4 - 2, 0, (float)rng.NextDouble() * 4 - 2), Rotations.AngleAxis(facing * 45f + (float)rng.NextDouble() * 10f, Vector3.UnitY));
+        private static RigidPose RandomPlacement(Random rng, int facing) =>
+            new RigidPose(new Vector3((float)rng.NextDouble() * 4 - 2, 0, (float)rng.NextDouble() * 4 - 2), Rotations.AngleAxis(facing * 45f + (float)rng.NextDouble() * 10f, Vector3.UnitY));
 
         [TestCase("mocapbank_30fps.bvh")]
         [TestCase("mixamo_fingers_30fps.bvh")]
@@ -51,8 +51,8 @@ namespace AvatarGo.Core.Tests
                 Assert.That(calibrator.State, Is.EqualTo(CalibrationState.Calibrated), calibrator.LastMessage);
                 foreach (DeviceRole role in BodyRoles.All)
                 {
-                    Pose truth = wearer.Rig.DeviceInJoint(role).Inverse();
-                    Pose got = calibrator.Profile.JointInDevice(role);
+                    RigidPose truth = wearer.Rig.DeviceInJoint(role).Inverse();
+                    RigidPose got = calibrator.Profile.JointInDevice(role);
                     // 3 mm and 1°: 2 mm noise averaged over 45 samples is ~0.3 mm; the rest is the 0.5 % scale freedom.
                     Approx.Near(truth.Position, got.Position, 0.003f, $"{clip} {role} offset");
                     Approx.Near(truth.Rotation, got.Rotation, 1f, $"{clip} {role} rotation");

@@ -12,13 +12,13 @@ namespace AvatarGo.Core.Tests
             Func<Wearer, IReadOnlyList<DeviceInfo>> devices = null)
         {
             var wearer = new Wearer("mocapbank_30fps.bvh", 7, DeviceMountings.Default());
-            wearer.StandInTPose(new Pose(new Vector3(0.5f, 0, -1), Quaternion.Identity));
+            wearer.StandInTPose(new RigidPose(new Vector3(0.5f, 0, -1), Quaternion.Identity));
             pose?.Invoke(wearer);
             IReadOnlyList<DeviceInfo> list = devices?.Invoke(wearer) ?? wearer.Devices;
             var calibrator = new Calibrator(list, wearer.Map);
             var all = new DeviceSample[wearer.Devices.Length];
             var fed = new DeviceSample[list.Count];
-            var press = new List<InputEvent> { new InputEvent(1, InputEventKind.TriggerPressed) };
+            var press = new List<DeviceEvent> { new DeviceEvent(1, DeviceEventKind.TriggerPressed) };
             for (int i = 0; i < 90; i++)
             {
                 wearer.Sample(all, 0.001f, 0.1f);
@@ -30,7 +30,7 @@ namespace AvatarGo.Core.Tests
             return calibrator.LastError;
         }
 
-        private static void Turn(Wearer w, HumanBone bone, Vector3 axis, float degrees)
+        private static void Turn(Wearer w, HumanoidBone bone, Vector3 axis, float degrees)
         {
             int j = w.Map[bone];
             int parent = w.Map.Skeleton.GetParent(j);
@@ -42,7 +42,7 @@ namespace AvatarGo.Core.Tests
         private static int Index(DeviceRole role) => Array.IndexOf(Wearer.TrueRoles, role);
 
         private static void Move(DeviceSample[] s, DeviceRole role, Vector3 by) =>
-            s[Index(role)] = new DeviceSample(new Pose(s[Index(role)].Pose.Position + by, s[Index(role)].Pose.Rotation), true);
+            s[Index(role)] = new DeviceSample(new RigidPose(s[Index(role)].Pose.Position + by, s[Index(role)].Pose.Rotation), true);
 
         [Test] public void AValidTPoseIsAccepted() => Assert.That(Calibrate(), Is.EqualTo(CalibrationError.None));
 
@@ -61,26 +61,26 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void ArmsLoweredToAnAPose() => Assert.That(Calibrate(pose: w =>
         {
-            Turn(w, HumanBone.LeftUpperArm, Vector3.UnitZ, 40f);
-            Turn(w, HumanBone.RightUpperArm, Vector3.UnitZ, -40f);
+            Turn(w, HumanoidBone.LeftUpperArm, Vector3.UnitZ, 40f);
+            Turn(w, HumanoidBone.RightUpperArm, Vector3.UnitZ, -40f);
         }), Is.EqualTo(CalibrationError.ArmsNotLevel));
 
         [Test]
         public void ArmsForwardNotSpread() => Assert.That(Calibrate(pose: w =>
         {
-            Turn(w, HumanBone.LeftUpperArm, Vector3.UnitY, 90f);
-            Turn(w, HumanBone.RightUpperArm, Vector3.UnitY, -90f);
+            Turn(w, HumanoidBone.LeftUpperArm, Vector3.UnitY, 90f);
+            Turn(w, HumanoidBone.RightUpperArm, Vector3.UnitY, -90f);
         }), Is.EqualTo(CalibrationError.ArmsNotSpread));
 
         [Test]
-        public void HeadTilted() => Assert.That(Calibrate(pose: w => Turn(w, HumanBone.Head, Vector3.UnitX, 40f)), Is.EqualTo(CalibrationError.HeadNotUpright));
+        public void HeadTilted() => Assert.That(Calibrate(pose: w => Turn(w, HumanoidBone.Head, Vector3.UnitX, 40f)), Is.EqualTo(CalibrationError.HeadNotUpright));
 
         [Test]
-        public void LookingSideways() => Assert.That(Calibrate(pose: w => Turn(w, HumanBone.Head, Vector3.UnitY, 70f)), Is.EqualTo(CalibrationError.NotFacingPlane));
+        public void LookingSideways() => Assert.That(Calibrate(pose: w => Turn(w, HumanoidBone.Head, Vector3.UnitY, 70f)), Is.EqualTo(CalibrationError.NotFacingPlane));
 
         [Test]
         public void BothControllersInOneHand() => Assert.That(Calibrate(samples: (i, s) =>
-            s[Index(DeviceRole.LeftHand)] = new DeviceSample(new Pose(s[Index(DeviceRole.RightHand)].Pose.Position + new Vector3(0.05f, 0, 0), Quaternion.Identity), true)),
+            s[Index(DeviceRole.LeftHand)] = new DeviceSample(new RigidPose(s[Index(DeviceRole.RightHand)].Pose.Position + new Vector3(0.05f, 0, 0), Quaternion.Identity), true)),
             Is.EqualTo(CalibrationError.ArmsNotSpread).Or.EqualTo(CalibrationError.RoleConflict));
 
         [Test]
@@ -119,7 +119,7 @@ namespace AvatarGo.Core.Tests
         public void AFourthTrackerIsIgnoredWithAnExplanation()
         {
             var wearer = new Wearer("mocapbank_30fps.bvh", 8, DeviceMountings.Default());
-            wearer.StandInTPose(Pose.Identity);
+            wearer.StandInTPose(RigidPose.Identity);
             var devices = new List<DeviceInfo>(wearer.Devices) { new DeviceInfo(20, DeviceClass.Tracker, "EXTRA") };
             var calibrator = new Calibrator(devices, wearer.Map);
             var six = new DeviceSample[6];
@@ -128,8 +128,8 @@ namespace AvatarGo.Core.Tests
             {
                 wearer.Sample(six, 0.001f, 0.1f);
                 Array.Copy(six, seven, 6);
-                seven[6] = new DeviceSample(new Pose(new Vector3(1.5f, 0.9f, 2f), Quaternion.Identity), true); // on a table nearby
-                calibrator.Update(i / 90.0, seven, i == 89 ? new[] { new InputEvent(1, InputEventKind.TriggerPressed) } : null);
+                seven[6] = new DeviceSample(new RigidPose(new Vector3(1.5f, 0.9f, 2f), Quaternion.Identity), true); // on a table nearby
+                calibrator.Update(i / 90.0, seven, i == 89 ? new[] { new DeviceEvent(1, DeviceEventKind.TriggerPressed) } : null);
             }
             Assert.That(calibrator.LastError, Is.EqualTo(CalibrationError.None), calibrator.LastMessage);
             Assert.That(calibrator.Explanation, Does.Contain("ignored"));

@@ -25,18 +25,18 @@ namespace AvatarGo.Core.Tests
             var rng = new Random(seed);
             var turn = new Quaternion[s.JointCount];
             for (int j = 0; j < turn.Length; j++)
-                turn[j] = HumanBones.IsFinger(map.BoneOf(j)) ? DeviceMountings.UniformRotation(rng) : Quaternion.Identity;
-            var rest = new Pose[s.JointCount];
+                turn[j] = HumanoidBones.IsFinger(map.BoneOf(j)) ? DeviceMountings.UniformRotation(rng) : Quaternion.Identity;
+            var rest = new RigidPose[s.JointCount];
             var parents = new int[s.JointCount];
             var ends = new bool[s.JointCount];
             for (int j = 0; j < rest.Length; j++)
             {
                 parents[j] = s.GetParent(j);
                 ends[j] = s.IsEndSite(j);
-                Pose local = s.GetRestLocal(j);
+                RigidPose local = s.GetRestLocal(j);
                 Quaternion parentTurn = parents[j] >= 0 ? turn[parents[j]] : Quaternion.Identity;
                 // new local = R_parent^-1 * old local * R_j: world rotations become old * R_j, positions unchanged.
-                rest[j] = new Pose(Vector3.Transform(local.Position, Quaternion.Conjugate(parentTurn)),
+                rest[j] = new RigidPose(Vector3.Transform(local.Position, Quaternion.Conjugate(parentTurn)),
                     Quaternion.Normalize(Quaternion.Conjugate(parentTurn) * local.Rotation * turn[j]));
             }
             return new HumanoidMap(new Skeleton(s.Names, parents, rest, ends), map.Pairs());
@@ -70,7 +70,7 @@ namespace AvatarGo.Core.Tests
                     var hb = new HandModel(b, left);
                     var sa = new FingerSolver(ha, profile);
                     var sb = new FingerSolver(hb, profile);
-                    var hand = new Pose(new Vector3(0.2f, 1.1f, 0.3f), Rotations.AngleAxis(40f, new Vector3(0.3f, 1, 0.2f)));
+                    var hand = new RigidPose(new Vector3(0.2f, 1.1f, 0.3f), Rotations.AngleAxis(40f, new Vector3(0.3f, 1, 0.2f)));
                     sa.Solve(hand, hand * ha.ControllerInHand(profile), GripMode.Hold);
                     sb.Solve(hand, hand * hb.ControllerInHand(profile), GripMode.Hold);
                     for (int i = 0; i < HandModel.ParameterCount; i++)
@@ -87,13 +87,13 @@ namespace AvatarGo.Core.Tests
             {
                 var hand = new HandModel(map, false);
                 var solver = new FingerSolver(hand, profile);
-                Pose h = Pose.Identity;
+                RigidPose h = RigidPose.Identity;
                 solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Hold);
                 Assert.That(solver.T[4], Is.GreaterThan(0.3f));
                 solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Open);
                 for (int i = 0; i < HandModel.ParameterCount; i++) Assert.That(solver.T[i], Is.EqualTo(0f));
                 solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Hold);
-                var away = new Pose(new Vector3(0, 0, 0.5f), Quaternion.Identity) * (h * hand.ControllerInHand(profile));
+                var away = new RigidPose(new Vector3(0, 0, 0.5f), Quaternion.Identity) * (h * hand.ControllerInHand(profile));
                 for (int frame = 0; frame < 3; frame++)
                 {
                     solver.Solve(h, away, GripMode.Hold);
@@ -110,7 +110,7 @@ namespace AvatarGo.Core.Tests
             foreach (ControllerProfile profile in Profiles())
             {
                 var hand = new HandModel(map, true);
-                Pose inHand = hand.ControllerInHand(profile);
+                RigidPose inHand = hand.ControllerInHand(profile);
                 var final = new float[3][];
                 int[] rates = { 72, 90, 144 };
                 for (int r = 0; r < rates.Length; r++)
@@ -120,8 +120,8 @@ namespace AvatarGo.Core.Tests
                     for (int i = 0; i <= frames; i++)
                     {
                         float t = i / (float)rates[r];
-                        var wobble = new Pose(new Vector3(0.002f * MathF.Sin(5 * t), 0.002f * MathF.Cos(3 * t), 0), Rotations.AngleAxis(3f * MathF.Sin(4 * t), Vector3.UnitY));
-                        solver.Solve(Pose.Identity, inHand * wobble, GripMode.Hold);
+                        var wobble = new RigidPose(new Vector3(0.002f * MathF.Sin(5 * t), 0.002f * MathF.Cos(3 * t), 0), Rotations.AngleAxis(3f * MathF.Sin(4 * t), Vector3.UnitY));
+                        solver.Solve(RigidPose.Identity, inHand * wobble, GripMode.Hold);
                     }
                     final[r] = solver.T.ToArray();
                 }
@@ -140,9 +140,9 @@ namespace AvatarGo.Core.Tests
             foreach (ControllerProfile profile in Profiles())
             {
                 var solver = new FingerSolver(hand, profile);
-                solver.Solve(Pose.Identity, hand.ControllerInHand(profile), GripMode.Hold);
+                solver.Solve(RigidPose.Identity, hand.ControllerInHand(profile), GripMode.Hold);
                 float index = solver.T[4];
-                solver.Solve(new Pose(new Vector3(float.NaN, 0, 0), Quaternion.Identity), hand.ControllerInHand(profile), GripMode.Hold);
+                solver.Solve(new RigidPose(new Vector3(float.NaN, 0, 0), Quaternion.Identity), hand.ControllerInHand(profile), GripMode.Hold);
                 Assert.That(solver.T[4], Is.EqualTo(index));
                 Assert.That(float.IsNaN(solver.T[4]), Is.False);
             }
@@ -155,16 +155,16 @@ namespace AvatarGo.Core.Tests
             foreach (ControllerProfile profile in Profiles())
             {
                 var solver = new FingerSolver(hand, profile);
-                Pose c = hand.ControllerInHand(profile);
-                solver.Solve(Pose.Identity, c, GripMode.Hold);
+                RigidPose c = hand.ControllerInHand(profile);
+                solver.Solve(RigidPose.Identity, c, GripMode.Hold);
                 float[] hold = solver.T.ToArray();
-                solver.Solve(Pose.Identity, c, GripMode.Point);
+                solver.Solve(RigidPose.Identity, c, GripMode.Point);
                 Assert.That(solver.T[3] + solver.T[4] + solver.T[5], Is.EqualTo(0f), profile.Name + ": index extended");
                 Assert.That(solver.T[7], Is.EqualTo(hold[7]).Within(1e-6f), profile.Name + ": middle still holds");
-                solver.Solve(Pose.Identity, c, GripMode.InputDriven, trigger: 1f, grip: 0.5f);
+                solver.Solve(RigidPose.Identity, c, GripMode.InputDriven, trigger: 1f, grip: 0.5f);
                 Assert.That(solver.T[4], Is.EqualTo(hold[4]).Within(1e-6f), profile.Name + ": full trigger = index on the trigger");
                 Assert.That(solver.T[7], Is.EqualTo(0.5f * hold[7]).Within(1e-6f), profile.Name + ": half grip = half closed");
-                solver.Solve(Pose.Identity, c, GripMode.InputDriven, trigger: 0f, grip: 1f);
+                solver.Solve(RigidPose.Identity, c, GripMode.InputDriven, trigger: 0f, grip: 1f);
                 Assert.That(solver.T[4], Is.EqualTo(0f), profile.Name + ": released trigger = index pointing");
             }
         }

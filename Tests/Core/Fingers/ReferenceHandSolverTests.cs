@@ -40,20 +40,20 @@ namespace AvatarGo.Core.Tests
                     var t = new float[HandModel.ParameterCount];
                     for (int i = 0; i < 15; i++) t[i] = 0.5f; // every joint half closed, the thumb not spread
                     model.Apply(t, pose);
-                    var world = new Pose[s.JointCount];
+                    var world = new RigidPose[s.JointCount];
                     s.ComputeWorld(pose.Local, world);
-                    var rest = new Pose[s.JointCount];
+                    var rest = new RigidPose[s.JointCount];
                     s.GetRestLocal(rest);
-                    var restWorld = new Pose[s.JointCount];
+                    var restWorld = new RigidPose[s.JointCount];
                     s.ComputeWorld(rest, restWorld);
-                    Pose hand = restWorld[model.HandJoint];
+                    RigidPose hand = restWorld[model.HandJoint];
                     Vector3 palm = hand.TransformDirection(model.PalmNormalInHand);
                     // Truth from the construction: the palm faces the rig's canonical −y, turned by the arm rotation.
                     Vector3 expectedPalm = Vector3.Transform(-Vector3.UnitY, Rotations.AngleAxis(70f, new Vector3(0.2f, 0.1f, 1f)));
                     Assert.That(Vector3.Dot(palm, expectedPalm), Is.GreaterThan(0.99f), $"palm normal, axis {axis}, {(left ? "left" : "right")}");
                     for (int f = 1; f < 5; f++)
                     {
-                        int tip = map[HumanBones.Finger(left, f, 2)] + 1; // the end site follows the distal joint
+                        int tip = map[HumanoidBones.Finger(left, f, 2)] + 1; // the end site follows the distal joint
                         Vector3 moved = world[tip].Position - restWorld[tip].Position;
                         // Half-closed, every tip has moved toward the palm side by at least 1 cm (a 7-9 cm finger
                         // turned by 35-50° per joint moves its tip 3-6 cm).
@@ -61,8 +61,8 @@ namespace AvatarGo.Core.Tests
                     }
                     // The thumb flexes across the palm: its tip comes at least 1 cm nearer the little finger's base
                     // (a 9.8 cm thumb turned by 20°, 25° and 35°) and moves to the palm side.
-                    int thumbTip = map[HumanBones.Finger(left, 0, 2)] + 1;
-                    Vector3 littleBase = restWorld[map[HumanBones.Finger(left, 4, 0)]].Position;
+                    int thumbTip = map[HumanoidBones.Finger(left, 0, 2)] + 1;
+                    Vector3 littleBase = restWorld[map[HumanoidBones.Finger(left, 4, 0)]].Position;
                     float nearer = Vector3.Distance(restWorld[thumbTip].Position, littleBase) - Vector3.Distance(world[thumbTip].Position, littleBase);
                     Assert.That(nearer, Is.GreaterThan(0.01f), $"thumb toward the little finger, axis {axis}, {(left ? "left" : "right")}");
                     Assert.That(Vector3.Dot(world[thumbTip].Position - restWorld[thumbTip].Position, palm), Is.GreaterThan(0f), $"thumb to the palm side, axis {axis}, {(left ? "left" : "right")}");
@@ -78,7 +78,7 @@ namespace AvatarGo.Core.Tests
                     Assert.That(Vector3.Dot(lifted, across), Is.GreaterThan(0.01f), $"thumb spread, axis {axis}, {(left ? "left" : "right")}");
                     for (int f = 1; f < 5; f++)
                     {
-                        int tip = map[HumanBones.Finger(left, f, 2)] + 1;
+                        int tip = map[HumanoidBones.Finger(left, f, 2)] + 1;
                         Assert.That(Vector3.Distance(world[tip].Position, restWorld[tip].Position), Is.LessThan(1e-5f), "spreading the thumb moves no finger");
                     }
                 }
@@ -96,7 +96,7 @@ namespace AvatarGo.Core.Tests
                         HumanoidMap map = ReferenceHandRig.Build(1f, axis, 11, Rotations.AngleAxis(-90f, Vector3.UnitZ));
                         var model = new HandModel(map, left);
                         var solver = new FingerSolver(model, profile);
-                        var hand = new Pose(new Vector3(0.3f, 1.0f, 0.2f), Rotations.AngleAxis(25f, new Vector3(1, 1, 0)));
+                        var hand = new RigidPose(new Vector3(0.3f, 1.0f, 0.2f), Rotations.AngleAxis(25f, new Vector3(1, 1, 0)));
                         solver.Solve(hand, hand * model.ControllerInHand(profile), GripMode.Hold);
                         float[] t = solver.T.ToArray();
                         if (reference == null) { reference = t; continue; }
@@ -125,7 +125,7 @@ namespace AvatarGo.Core.Tests
                 {
                     var model = new HandModel(map, left);
                     var solver = new FingerSolver(model, profile);
-                    Pose inHand = model.ControllerInHand(profile);
+                    RigidPose inHand = model.ControllerInHand(profile);
                     float maxPenetration = 0f;
                     var gaps = new List<float>[5];
                     for (int f = 0; f < 5; f++) gaps[f] = new List<float>();
@@ -134,9 +134,9 @@ namespace AvatarGo.Core.Tests
                     {
                         float time = frame / 90f;
                         // The controller wobbles in the hand by up to 2 mm and 3°, as a loosely held controller does.
-                        var wobble = new Pose(new Vector3(0.002f * MathF.Sin(5 * time), 0.002f * MathF.Cos(3 * time), 0.001f * MathF.Sin(7 * time)),
+                        var wobble = new RigidPose(new Vector3(0.002f * MathF.Sin(5 * time), 0.002f * MathF.Cos(3 * time), 0.001f * MathF.Sin(7 * time)),
                             Rotations.AngleAxis(3f * MathF.Sin(4 * time), new Vector3(0.3f, 1f, 0.2f)));
-                        solver.Solve(Pose.Identity, inHand * wobble, GripMode.Hold);
+                        solver.Solve(RigidPose.Identity, inHand * wobble, GripMode.Hold);
                         for (int f = 0; f < 5; f++)
                         {
                             for (int point = 0; point < 3; point++) maxPenetration = Math.Max(maxPenetration, -solver.SurfaceGap(f, point));
@@ -166,7 +166,7 @@ namespace AvatarGo.Core.Tests
                 {
                     var model = new HandModel(map, left);
                     var solver = new FingerSolver(model, profile);
-                    var hand = new Pose(new Vector3(0.1f, 1.2f, -0.3f), Rotations.AngleAxis(40f, new Vector3(0, 1, 1)));
+                    var hand = new RigidPose(new Vector3(0.1f, 1.2f, -0.3f), Rotations.AngleAxis(40f, new Vector3(0, 1, 1)));
                     solver.Solve(hand, hand * model.ControllerInHand(profile), GripMode.Hold); // sets the hand in the controller frame
                     int compared = 0;
                     for (int sample = 0; sample < 40; sample++)
@@ -205,24 +205,24 @@ namespace AvatarGo.Core.Tests
                 {
                     var model = new HandModel(map, left);
                     var solver = new FingerSolver(model, profile);
-                    var hand = new Pose(new Vector3(0.2f, 1.1f, 0.4f), Rotations.AngleAxis(-35f, new Vector3(1, 0, 1)));
-                    Pose controller = hand * model.ControllerInHand(profile);
+                    var hand = new RigidPose(new Vector3(0.2f, 1.1f, 0.4f), Rotations.AngleAxis(-35f, new Vector3(1, 0, 1)));
+                    RigidPose controller = hand * model.ControllerInHand(profile);
                     solver.Solve(hand, controller, GripMode.Hold);
                     t[left ? 0 : 1] = solver.T.ToArray();
                     // What the avatar shows (Apply, then forward kinematics) is what the solver measured.
                     var pose = new SkeletonPose(s);
                     pose.ResetToRest();
-                    pose.Local[model.HandJoint] = hand.RelativeTo(s.GetParent(model.HandJoint) < 0 ? Pose.Identity : RestWorld(s)[s.GetParent(model.HandJoint)]);
+                    pose.Local[model.HandJoint] = hand.RelativeTo(s.GetParent(model.HandJoint) < 0 ? RigidPose.Identity : RestWorld(s)[s.GetParent(model.HandJoint)]);
                     model.Apply(solver.T, pose);
-                    var world = new Pose[s.JointCount];
+                    var world = new RigidPose[s.JointCount];
                     s.ComputeWorld(pose.Local, world);
                     for (int f = 0; f < 5; f++)
                         for (int k = 1; k < 3; k++)
                         {
-                            Vector3 shown = controller.InverseTransformPoint(world[map[HumanBones.Finger(left, f, k)]].Position);
+                            Vector3 shown = controller.InverseTransformPoint(world[map[HumanoidBones.Finger(left, f, k)]].Position);
                             Assert.That(Vector3.Distance(shown, solver.PointInController(f, k - 1)), Is.LessThan(1e-5f), $"{profile.Name} {(left ? "left" : "right")} finger {f} joint {k}");
                         }
-                    int tip = map[HumanBones.Finger(left, 0, 2)] + 1;
+                    int tip = map[HumanoidBones.Finger(left, 0, 2)] + 1;
                     Assert.That(Vector3.Distance(controller.InverseTransformPoint(world[tip].Position), solver.PointInController(0, 2)), Is.LessThan(1e-5f), profile.Name + ": thumb tip");
                 }
                 // The profiles are symmetric about their x = 0 plane and the hands are mirror images: same grip.
@@ -231,11 +231,11 @@ namespace AvatarGo.Core.Tests
             }
         }
 
-        private static Pose[] RestWorld(Skeleton s)
+        private static RigidPose[] RestWorld(Skeleton s)
         {
-            var rest = new Pose[s.JointCount];
+            var rest = new RigidPose[s.JointCount];
             s.GetRestLocal(rest);
-            var world = new Pose[s.JointCount];
+            var world = new RigidPose[s.JointCount];
             s.ComputeWorld(rest, world);
             return world;
         }
@@ -244,13 +244,13 @@ namespace AvatarGo.Core.Tests
         public void AHandWithoutAThumbHoldsWithItsFingersAndReportsNoThumb()
         {
             HumanoidMap full = ReferenceHandRig.Build();
-            var bones = new List<KeyValuePair<HumanBone, string>>();
-            foreach (HumanBone b in Enum.GetValues(typeof(HumanBone)))
+            var bones = new List<KeyValuePair<HumanoidBone, string>>();
+            foreach (HumanoidBone b in Enum.GetValues(typeof(HumanoidBone)))
             {
                 bool thumb = false;
                 foreach (bool side in new[] { true, false })
-                    for (int k = 0; k < 3; k++) thumb |= b == HumanBones.Finger(side, 0, k);
-                if (!thumb && full.Has(b)) bones.Add(new KeyValuePair<HumanBone, string>(b, full.NameOf(b)));
+                    for (int k = 0; k < 3; k++) thumb |= b == HumanoidBones.Finger(side, 0, k);
+                if (!thumb && full.Has(b)) bones.Add(new KeyValuePair<HumanoidBone, string>(b, full.NameOf(b)));
             }
             var map = new HumanoidMap(full.Skeleton, bones);
             foreach (ControllerProfile profile in Profiles())
@@ -258,7 +258,7 @@ namespace AvatarGo.Core.Tests
                 var model = new HandModel(map, false);
                 Assert.That(model.Has(0), Is.False);
                 var solver = new FingerSolver(model, profile);
-                solver.Solve(Pose.Identity, model.ControllerInHand(profile), GripMode.Hold);
+                solver.Solve(RigidPose.Identity, model.ControllerInHand(profile), GripMode.Hold);
                 Assert.That(float.IsNaN(solver.PointInController(0, 2).X), Is.True, profile.Name + ": no thumb, no thumb point");
                 Assert.That(float.IsNaN(solver.GoalDistance(0)), Is.True, profile.Name + ": no thumb, no thumb distance");
                 Assert.That(solver.T[0] + solver.T[1] + solver.T[2] + solver.T[HandModel.ThumbSpreadIndex], Is.EqualTo(0f), profile.Name + ": the missing thumb stays at rest");
@@ -274,7 +274,7 @@ namespace AvatarGo.Core.Tests
             foreach (ControllerProfile profile in Profiles())
             {
                 var model = new HandModel(map, false);
-                Pose inHand = model.ControllerInHand(profile);
+                RigidPose inHand = model.ControllerInHand(profile);
                 int[] rates = { 72, 90, 144 };
                 var final = new float[rates.Length][];
                 for (int r = 0; r < rates.Length; r++)
@@ -283,16 +283,16 @@ namespace AvatarGo.Core.Tests
                     for (int i = 0; i <= rates[r]; i++)
                     {
                         float time = i / (float)rates[r]; // one second; every rate ends on the same pose at t = 1 s
-                        var wobble = new Pose(new Vector3(0.002f * MathF.Sin(5 * time), 0, 0.002f * MathF.Cos(4 * time)), Rotations.AngleAxis(4f * MathF.Sin(3 * time), Vector3.UnitX));
-                        solver.Solve(Pose.Identity, inHand * wobble, GripMode.Hold);
+                        var wobble = new RigidPose(new Vector3(0.002f * MathF.Sin(5 * time), 0, 0.002f * MathF.Cos(4 * time)), Rotations.AngleAxis(4f * MathF.Sin(3 * time), Vector3.UnitX));
+                        solver.Solve(RigidPose.Identity, inHand * wobble, GripMode.Hold);
                     }
                     final[r] = solver.T.ToArray();
                     // Pull the controller out of the hand over 10 frames: the hand must end open and stay open.
                     float previousSum = float.MaxValue;
                     for (int i = 1; i <= 20; i++)
                     {
-                        var away = new Pose(new Vector3(0, 0, 0.01f * Math.Min(i, 10)), Quaternion.Identity);
-                        solver.Solve(Pose.Identity, away * inHand, GripMode.Hold);
+                        var away = new RigidPose(new Vector3(0, 0, 0.01f * Math.Min(i, 10)), Quaternion.Identity);
+                        solver.Solve(RigidPose.Identity, away * inHand, GripMode.Hold);
                         if (i >= 10)
                         {
                             float sum = 0f;
@@ -319,7 +319,7 @@ namespace AvatarGo.Core.Tests
                 foreach (bool left in new[] { true, false })
                 {
                     var model = new HandModel(map, left);
-                    Pose controllerInHand = model.ControllerInHand(profile);
+                    RigidPose controllerInHand = model.ControllerInHand(profile);
                     // The palm centre (on the skin) touches the handle: 2 mm of clearance, within 0.5 mm.
                     Vector3 palmInController = controllerInHand.InverseTransformPoint(model.PalmCentreInHand);
                     Assert.That(profile.Shape.Distance(palmInController), Is.EqualTo(0.002f).Within(0.0005f), profile.Name);
@@ -327,8 +327,8 @@ namespace AvatarGo.Core.Tests
                     Vector3 handleAxis = controllerInHand.TransformDirection(Vector3.UnitY);
                     Assert.That(Vector3.Dot(handleAxis, model.AcrossInHand), Is.GreaterThan(0.999f), profile.Name);
                     // Wrist from a tracked controller pose: c * WristInController puts the palm centre back on the grip.
-                    var c = new Pose(new Vector3(0.1f, 1.2f, 0.4f), Rotations.AngleAxis(120f, new Vector3(1, -2, 0.5f)));
-                    Pose wrist = c * model.WristInController(profile);
+                    var c = new RigidPose(new Vector3(0.1f, 1.2f, 0.4f), Rotations.AngleAxis(120f, new Vector3(1, -2, 0.5f)));
+                    RigidPose wrist = c * model.WristInController(profile);
                     Vector3 palmWorld = wrist.TransformPoint(model.PalmCentreInHand);
                     Assert.That(Vector3.Distance(c.InverseTransformPoint(palmWorld), palmInController), Is.LessThan(1e-5f), profile.Name);
                 }

@@ -26,14 +26,14 @@ namespace AvatarGo.Core.Tests
         public void MocapBankMapsCmuStyleNames()
         {
             HumanoidMap map = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.SharedMocap("mocapbank_30fps.bvh")).Skeleton);
-            Assert.That(map.NameOf(HumanBone.LeftShoulder), Is.EqualTo("LeftCollar"));
-            Assert.That(map.NameOf(HumanBone.LeftUpperArm), Is.EqualTo("LeftShoulder"));
-            Assert.That(map.NameOf(HumanBone.LeftLowerArm), Is.EqualTo("LeftElbow"));
-            Assert.That(map.NameOf(HumanBone.LeftHand), Is.EqualTo("LeftWrist"));
-            Assert.That(map.NameOf(HumanBone.RightUpperLeg), Is.EqualTo("RightHip"));
-            Assert.That(map.NameOf(HumanBone.RightFoot), Is.EqualTo("RightAnkle"));
-            Assert.That(map.NameOf(HumanBone.Spine), Is.EqualTo("Chest"));
-            Assert.That(map.NameOf(HumanBone.Chest), Is.EqualTo("Chest2"));
+            Assert.That(map.NameOf(HumanoidBone.LeftShoulder), Is.EqualTo("LeftCollar"));
+            Assert.That(map.NameOf(HumanoidBone.LeftUpperArm), Is.EqualTo("LeftShoulder"));
+            Assert.That(map.NameOf(HumanoidBone.LeftLowerArm), Is.EqualTo("LeftElbow"));
+            Assert.That(map.NameOf(HumanoidBone.LeftHand), Is.EqualTo("LeftWrist"));
+            Assert.That(map.NameOf(HumanoidBone.RightUpperLeg), Is.EqualTo("RightHip"));
+            Assert.That(map.NameOf(HumanoidBone.RightFoot), Is.EqualTo("RightAnkle"));
+            Assert.That(map.NameOf(HumanoidBone.Spine), Is.EqualTo("Chest"));
+            Assert.That(map.NameOf(HumanoidBone.Chest), Is.EqualTo("Chest2"));
         }
 
         [Test]
@@ -43,28 +43,28 @@ namespace AvatarGo.Core.Tests
             for (int f = 0; f < 5; f++)
             for (int p = 0; p < 3; p++)
             {
-                Assert.That(mixamo.Has(HumanBones.Finger(true, f, p)), Is.True, HumanBones.Finger(true, f, p).ToString());
-                Assert.That(mixamo.Has(HumanBones.Finger(false, f, p)), Is.True, HumanBones.Finger(false, f, p).ToString());
+                Assert.That(mixamo.Has(HumanoidBones.Finger(true, f, p)), Is.True, HumanoidBones.Finger(true, f, p).ToString());
+                Assert.That(mixamo.Has(HumanoidBones.Finger(false, f, p)), Is.True, HumanoidBones.Finger(false, f, p).ToString());
             }
-            Assert.That(mixamo.NameOf(HumanBone.LeftShoulder), Is.EqualTo("mixamorig:LeftShoulder"));
-            Assert.That(mixamo.NameOf(HumanBone.LeftUpperArm), Is.EqualTo("mixamorig:LeftArm"));
-            Assert.That(mixamo.NameOf(HumanBone.UpperChest), Is.EqualTo("mixamorig:Spine2"));
+            Assert.That(mixamo.NameOf(HumanoidBone.LeftShoulder), Is.EqualTo("mixamorig:LeftShoulder"));
+            Assert.That(mixamo.NameOf(HumanoidBone.LeftUpperArm), Is.EqualTo("mixamorig:LeftArm"));
+            Assert.That(mixamo.NameOf(HumanoidBone.UpperChest), Is.EqualTo("mixamorig:Spine2"));
 
             HumanoidMap rigify = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.SharedMocap("rigify_6channel_24fps.bvh")).Skeleton);
-            Assert.That(rigify.NameOf(HumanBone.Hips), Is.EqualTo("pelvis"));
-            Assert.That(rigify.NameOf(HumanBone.LeftUpperLeg), Is.EqualTo("thigh.L"));
-            Assert.That(rigify.NameOf(HumanBone.LeftHand), Is.EqualTo("forearm.L_End"));
-            Assert.That(rigify.NameOf(HumanBone.Head), Is.EqualTo("face"));
+            Assert.That(rigify.NameOf(HumanoidBone.Hips), Is.EqualTo("pelvis"));
+            Assert.That(rigify.NameOf(HumanoidBone.LeftUpperLeg), Is.EqualTo("thigh.L"));
+            Assert.That(rigify.NameOf(HumanoidBone.LeftHand), Is.EqualTo("forearm.L_End"));
+            Assert.That(rigify.NameOf(HumanoidBone.Head), Is.EqualTo("face"));
         }
 
         [Test]
         public void OverridesWinOverDetection()
         {
             Skeleton s = BvhReader.ReadFile(TestData.SharedMocap("mocapbank_30fps.bvh")).Skeleton;
-            var map = HumanoidNaming.Detect(s, new Dictionary<string, HumanBone> { { "Chest2", HumanBone.UpperChest } });
-            Assert.That(map.NameOf(HumanBone.UpperChest), Is.EqualTo("Chest2"));
-            Assert.That(map.NameOf(HumanBone.Chest), Is.Not.EqualTo("Chest2"));
-            Assert.Throws<ArgumentException>(() => HumanoidNaming.Detect(s, new Dictionary<string, HumanBone> { { "Nope", HumanBone.Jaw } }));
+            var map = HumanoidNaming.Detect(s, new Dictionary<string, HumanoidBone> { { "Chest2", HumanoidBone.UpperChest } });
+            Assert.That(map.NameOf(HumanoidBone.UpperChest), Is.EqualTo("Chest2"));
+            Assert.That(map.NameOf(HumanoidBone.Chest), Is.Not.EqualTo("Chest2"));
+            Assert.Throws<ArgumentException>(() => HumanoidNaming.Detect(s, new Dictionary<string, HumanoidBone> { { "Nope", HumanoidBone.Jaw } }));
         }
 
         [TestCase("Hips", "LeftUpLeg", "LeftLeg", "LeftFoot", "LeftToe", "Spine", "Spine1", "Spine2", "Neck", "Head", "LeftShoulder", "LeftArm", "LeftForeArm", "LeftHand")]
@@ -93,17 +93,17 @@ namespace AvatarGo.Core.Tests
                 Func<string, string> side = n => left ? n : Right(n);
                 int a = Add(side(clavicle), s3); a = Add(side(upperArm), a); a = Add(side(foreArm), a); Add(side(hand), a);
             }
-            var rest = new Pose[names.Count];
-            for (int i = 0; i < rest.Length; i++) rest[i] = new Pose(new Vector3(0, 0.1f, 0), Quaternion.Identity);
+            var rest = new RigidPose[names.Count];
+            for (int i = 0; i < rest.Length; i++) rest[i] = new RigidPose(new Vector3(0, 0.1f, 0), Quaternion.Identity);
             HumanoidMap map = HumanoidNaming.Detect(new Skeleton(names, parents, rest));
             Assert.That(map.MissingRequired(), Is.Empty);
-            Assert.That(map.NameOf(HumanBone.LeftShoulder), Is.EqualTo(clavicle));
-            Assert.That(map.NameOf(HumanBone.RightUpperArm), Is.EqualTo(Right(upperArm)));
-            Assert.That(map.NameOf(HumanBone.RightLowerLeg), Is.EqualTo(Right(leg)));
-            Assert.That(map.NameOf(HumanBone.LeftToes), Is.EqualTo(toe));
-            Assert.That(map.NameOf(HumanBone.Chest), Is.EqualTo(chest));
-            Assert.That(map.NameOf(HumanBone.UpperChest), Is.EqualTo(upperChest));
-            Assert.That(map.NameOf(HumanBone.Head), Is.EqualTo(head));
+            Assert.That(map.NameOf(HumanoidBone.LeftShoulder), Is.EqualTo(clavicle));
+            Assert.That(map.NameOf(HumanoidBone.RightUpperArm), Is.EqualTo(Right(upperArm)));
+            Assert.That(map.NameOf(HumanoidBone.RightLowerLeg), Is.EqualTo(Right(leg)));
+            Assert.That(map.NameOf(HumanoidBone.LeftToes), Is.EqualTo(toe));
+            Assert.That(map.NameOf(HumanoidBone.Chest), Is.EqualTo(chest));
+            Assert.That(map.NameOf(HumanoidBone.UpperChest), Is.EqualTo(upperChest));
+            Assert.That(map.NameOf(HumanoidBone.Head), Is.EqualTo(head));
         }
 
         [Test]
@@ -129,10 +129,10 @@ namespace AvatarGo.Core.Tests
         {
             // FromPoses decomposes rotations into ZXY Euler angles; reading back must give the same world joints.
             BvhClip clip = BvhReader.ReadFile(TestData.SharedMocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true });
-            var frames = new List<Pose[]>();
+            var frames = new List<RigidPose[]>();
             for (int f = 0; f < clip.FrameCount; f++)
             {
-                var local = new Pose[clip.Skeleton.JointCount];
+                var local = new RigidPose[clip.Skeleton.JointCount];
                 clip.GetLocalPoses(f, local);
                 frames.Add(local);
             }
@@ -140,8 +140,8 @@ namespace AvatarGo.Core.Tests
             var sw = new StringWriter();
             BvhWriter.Write(sw, written);
             BvhClip back = BvhReader.Read(new StringReader(sw.ToString()), "euler", new BvhReadOptions { Scale = 0.01f });
-            var l1 = new Pose[clip.Skeleton.JointCount]; var w1 = new Pose[l1.Length];
-            var l2 = new Pose[l1.Length]; var w2 = new Pose[l1.Length];
+            var l1 = new RigidPose[clip.Skeleton.JointCount]; var w1 = new RigidPose[l1.Length];
+            var l2 = new RigidPose[l1.Length]; var w2 = new RigidPose[l1.Length];
             for (int f = 0; f < clip.FrameCount; f++)
             {
                 clip.GetWorldPoses(f, l1, w1);

@@ -30,10 +30,10 @@ namespace AvatarGo.Core.Tests
             {
                 var q = Rotations.AngleAxis((float)rng.NextDouble() * 360f, new Vector3((float)rng.NextDouble(), 1, (float)rng.NextDouble() - .5f));
                 var p = new Vector3((float)rng.NextDouble() * 4 - 2, (float)rng.NextDouble() * 2, (float)rng.NextDouble() * 4 - 2);
-                f.Samples[d] = new DeviceSample(new Pose(p, q), (i + d) % 17 != 0);
+                f.Samples[d] = new DeviceSample(new RigidPose(p, q), (i + d) % 17 != 0);
             }
-            if (i % 50 == 10) f.Events.Add(new InputEvent(3, InputEventKind.TriggerPressed));
-            if (i % 50 == 20) f.Events.Add(new InputEvent(3, InputEventKind.TriggerReleased));
+            if (i % 50 == 10) f.Events.Add(new DeviceEvent(3, DeviceEventKind.TriggerPressed));
+            if (i % 50 == 20) f.Events.Add(new DeviceEvent(3, DeviceEventKind.TriggerReleased));
             f.Trigger[1] = (float)rng.NextDouble();
             f.Grip[2] = (float)rng.NextDouble();
         }
@@ -91,8 +91,8 @@ namespace AvatarGo.Core.Tests
             HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
             SessionHeader h = Header(map, roles: true);
             var text = new StringWriter();
-            var local = new Pose[clip.Skeleton.JointCount];
-            var world = new Pose[local.Length];
+            var local = new RigidPose[clip.Skeleton.JointCount];
+            var world = new RigidPose[local.Length];
             using (var w = new SessionWriter(text, h))
             {
                 var f = new SessionFrame(h);
@@ -100,8 +100,8 @@ namespace AvatarGo.Core.Tests
                 {
                     Fill(f, i, new Random(i));
                     clip.GetWorldPoses(i, local, world);
-                    for (int b = 0; b < HumanBones.Count; b++)
-                        if (map.Has((HumanBone)b)) { f.Truth[b] = world[map[(HumanBone)b]]; f.HasTruth[b] = true; }
+                    for (int b = 0; b < HumanoidBones.Count; b++)
+                        if (map.Has((HumanoidBone)b)) { f.Truth[b] = world[map[(HumanoidBone)b]]; f.HasTruth[b] = true; }
                     w.WriteFrame(f);
                 }
             }
@@ -122,13 +122,13 @@ namespace AvatarGo.Core.Tests
             for (int i = 0; r.ReadFrame(g); i++)
             {
                 clip.GetWorldPoses(i, local, world);
-                Assert.That(g.HasTruth[(int)HumanBone.LeftHand], Is.True);
-                Assert.That(g.HasTruth[(int)HumanBone.LeftThumbProximal], Is.False);
-                for (int b = 0; b < HumanBones.Count; b++)
-                    if (map.Has((HumanBone)b))
+                Assert.That(g.HasTruth[(int)HumanoidBone.LeftHand], Is.True);
+                Assert.That(g.HasTruth[(int)HumanoidBone.LeftThumbProximal], Is.False);
+                for (int b = 0; b < HumanoidBones.Count; b++)
+                    if (map.Has((HumanoidBone)b))
                     {
-                        Assert.That(g.Truth[b].Position, Is.EqualTo(world[map[(HumanBone)b]].Position), ((HumanBone)b).ToString());
-                        Assert.That(g.Truth[b].Rotation, Is.EqualTo(world[map[(HumanBone)b]].Rotation), ((HumanBone)b).ToString());
+                        Assert.That(g.Truth[b].Position, Is.EqualTo(world[map[(HumanoidBone)b]].Position), ((HumanoidBone)b).ToString());
+                        Assert.That(g.Truth[b].Rotation, Is.EqualTo(world[map[(HumanoidBone)b]].Rotation), ((HumanoidBone)b).ToString());
                     }
             }
         }
@@ -173,7 +173,7 @@ namespace AvatarGo.Core.Tests
             using var w = new SessionWriter(new StringWriter(), h);
             var f = new SessionFrame(h);
             Fill(f, 1, new Random(1));
-            f.Samples[0] = new DeviceSample(new Pose(Vector3.Zero, new Quaternion(0, 0, 0, 0)), true);
+            f.Samples[0] = new DeviceSample(new RigidPose(Vector3.Zero, new Quaternion(0, 0, 0, 0)), true);
             Assert.Throws<ArgumentException>(() => w.WriteFrame(f));
             Fill(f, 5, new Random(1));
             w.WriteFrame(f);

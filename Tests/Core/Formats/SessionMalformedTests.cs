@@ -21,9 +21,9 @@ namespace AvatarGo.Core.Tests
                 {
                     f.Clear();
                     f.Time = i * 0.1;
-                    f.Samples[0] = new DeviceSample(new Pose(new Vector3(0, 1.7f, 0), Quaternion.Identity), true);
-                    f.Samples[1] = new DeviceSample(new Pose(new Vector3(0, 1, 0), Rotations.AngleAxis(30, Vector3.UnitY)), true);
-                    if (i == 2) f.Events.Add(new InputEvent(1, InputEventKind.TriggerPressed));
+                    f.Samples[0] = new DeviceSample(new RigidPose(new Vector3(0, 1.7f, 0), Quaternion.Identity), true);
+                    f.Samples[1] = new DeviceSample(new RigidPose(new Vector3(0, 1, 0), Rotations.AngleAxis(30, Vector3.UnitY)), true);
+                    if (i == 2) f.Events.Add(new DeviceEvent(1, DeviceEventKind.TriggerPressed));
                     w.WriteFrame(f);
                 }
             }

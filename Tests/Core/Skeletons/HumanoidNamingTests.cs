@@ -12,7 +12,7 @@ namespace AvatarGo.Core.Tests
             var names = new List<string>();
             var parents = new List<int>();
             var ends = new List<bool>();
-            var rest = new List<Pose>();
+            var rest = new List<RigidPose>();
             foreach (string e in entries)
             {
                 string[] parts = e.Split('<');
@@ -22,7 +22,7 @@ namespace AvatarGo.Core.Tests
                 names.Add(name);
                 parents.Add(parts.Length > 1 ? names.IndexOf(parts[1]) : -1);
                 ends.Add(end);
-                rest.Add(Pose.Identity);
+                rest.Add(RigidPose.Identity);
             }
             return new Skeleton(names, parents, rest, ends);
         }
@@ -32,7 +32,7 @@ namespace AvatarGo.Core.Tests
             foreach (string pair in boneEqualsJoint)
             {
                 string[] p = pair.Split('=');
-                var bone = (HumanBone)Enum.Parse(typeof(HumanBone), p[0]);
+                var bone = (HumanoidBone)Enum.Parse(typeof(HumanoidBone), p[0]);
                 Assert.That(map.NameOf(bone), Is.EqualTo(p[1]), p[0]);
             }
             AssertConsistent(map);
@@ -41,9 +41,9 @@ namespace AvatarGo.Core.Tests
         private static void AssertConsistent(HumanoidMap map)
         {
             var seen = new HashSet<int>();
-            for (int b = 0; b < HumanBones.Count; b++)
+            for (int b = 0; b < HumanoidBones.Count; b++)
             {
-                int j = map[(HumanBone)b];
+                int j = map[(HumanoidBone)b];
                 if (j >= 0) Assert.That(seen.Add(j), Is.True, $"joint {j} plays two bones");
             }
         }
@@ -74,7 +74,7 @@ namespace AvatarGo.Core.Tests
                 $"LeftIndexDistal={ns}LeftHandIndex3", $"RightThumbProximal={ns}RightHandThumb1",
                 $"LeftUpperLeg={ns}LeftUpLeg", $"LeftLowerLeg={ns}LeftLeg", $"LeftFoot={ns}LeftFoot", $"LeftToes={ns}LeftToeBase",
                 $"RightFoot={ns}RightFoot");
-            Assert.That(map.BoneOf(map.Skeleton.IndexOf(ns + "LeftHandIndex4")), Is.EqualTo(HumanBone.LastBone));
+            Assert.That(map.BoneOf(map.Skeleton.IndexOf(ns + "LeftHandIndex4")), Is.EqualTo(HumanoidBone.LastBone));
         }
 
         [Test]
@@ -114,7 +114,7 @@ namespace AvatarGo.Core.Tests
                 "LeftHip<Hips", "LeftKnee<LeftHip", "LeftAnkle<LeftKnee", "RightHip<Hips", "RightKnee<RightHip", "RightAnkle<RightKnee"));
             Assert.That(map.MissingRequired(), Is.Empty);
             Expect(map, "LeftUpperArm=LeftShoulder", "RightUpperArm=RightShoulder", "Spine=Chest");
-            Assert.That(map.Has(HumanBone.LeftShoulder), Is.False);
+            Assert.That(map.Has(HumanoidBone.LeftShoulder), Is.False);
         }
 
         [Test]
@@ -135,8 +135,8 @@ namespace AvatarGo.Core.Tests
                 "LeftThumbProximal=thumb.01.L", "LeftThumbIntermediate=thumb.02.L", "LeftIndexProximal=f_index.01.L",
                 "LeftIndexIntermediate=f_index.02.L", "LeftLittleDistal=f_pinky.03.L", "RightUpperLeg=thigh.R",
                 "RightLowerLeg=shin.R", "RightFoot=foot.R", "RightToes=toe.R");
-            Assert.That(map.BoneOf(map.Skeleton.IndexOf("pelvis.L")), Is.EqualTo(HumanBone.LastBone));
-            Assert.That(map.BoneOf(map.Skeleton.IndexOf("face")), Is.EqualTo(HumanBone.LastBone));
+            Assert.That(map.BoneOf(map.Skeleton.IndexOf("pelvis.L")), Is.EqualTo(HumanoidBone.LastBone));
+            Assert.That(map.BoneOf(map.Skeleton.IndexOf("face")), Is.EqualTo(HumanoidBone.LastBone));
         }
 
         [Test]
@@ -152,35 +152,35 @@ namespace AvatarGo.Core.Tests
             Assert.That(map.MissingRequired(), Is.Empty);
             Expect(map, "Head=Neck_End", "LeftHand=LeftForeArm_End", "RightHand=RightForeArm_End", "LeftFoot=LeftLeg_End",
                 "RightFoot=RightFoot", "Spine=Spine");
-            Assert.That(map.Has(HumanBone.RightToes), Is.False, "an End Site is not a toe");
+            Assert.That(map.Has(HumanoidBone.RightToes), Is.False, "an End Site is not a toe");
         }
 
         [Test]
         public void MissingBonesAreReported()
         {
             HumanoidMap map = HumanoidNaming.Detect(Build("Hips", "Spine<Hips", "Head<Spine", "LeftUpLeg<Hips", "LeftLeg<LeftUpLeg"));
-            Assert.That(map.MissingRequired(), Does.Contain(HumanBone.LeftFoot));
-            Assert.That(map.MissingRequired(), Does.Contain(HumanBone.RightHand));
-            Assert.That(map.MissingRequired(), Does.Not.Contain(HumanBone.Spine));
+            Assert.That(map.MissingRequired(), Does.Contain(HumanoidBone.LeftFoot));
+            Assert.That(map.MissingRequired(), Does.Contain(HumanoidBone.RightHand));
+            Assert.That(map.MissingRequired(), Does.Not.Contain(HumanoidBone.Spine));
         }
 
         [Test]
         public void OverridesWinAndKeepTheMapConsistent()
         {
             Skeleton s = Build(Mixamo("mixamorig:"));
-            var overrides = new Dictionary<string, HumanBone>
+            var overrides = new Dictionary<string, HumanoidBone>
             {
                 // Take a joint detection gave to another bone, and remap a detected bone.
-                ["mixamorig:Spine2"] = HumanBone.Chest,
-                ["mixamorig:LeftHandIndex1"] = HumanBone.LeftHand,
+                ["mixamorig:Spine2"] = HumanoidBone.Chest,
+                ["mixamorig:LeftHandIndex1"] = HumanoidBone.LeftHand,
             };
             HumanoidMap map = HumanoidNaming.Detect(s, overrides);
             Expect(map, "Chest=mixamorig:Spine2", "LeftHand=mixamorig:LeftHandIndex1", "Spine=mixamorig:Spine");
-            Assert.That(map.Has(HumanBone.UpperChest), Is.False, "Spine2 moved to Chest");
-            Assert.That(map.Has(HumanBone.LeftIndexProximal), Is.False, "Index1 moved to LeftHand");
-            Assert.That(map.BoneOf(s.IndexOf("mixamorig:LeftHand")), Is.EqualTo(HumanBone.LastBone));
+            Assert.That(map.Has(HumanoidBone.UpperChest), Is.False, "Spine2 moved to Chest");
+            Assert.That(map.Has(HumanoidBone.LeftIndexProximal), Is.False, "Index1 moved to LeftHand");
+            Assert.That(map.BoneOf(s.IndexOf("mixamorig:LeftHand")), Is.EqualTo(HumanoidBone.LastBone));
 
-            Assert.Throws<ArgumentException>(() => HumanoidNaming.Detect(s, new Dictionary<string, HumanBone> { ["nope"] = HumanBone.Head }));
+            Assert.Throws<ArgumentException>(() => HumanoidNaming.Detect(s, new Dictionary<string, HumanoidBone> { ["nope"] = HumanoidBone.Head }));
         }
 
         [Test]

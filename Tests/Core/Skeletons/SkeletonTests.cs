@@ -13,10 +13,10 @@ namespace AvatarGo.Core.Tests
                 new[] { -1, 0, 1, 2 },
                 new[]
                 {
-                    new Pose(new Vector3(0, 1, 0), Quaternion.Identity),
-                    new Pose(new Vector3(0, 0.5f, 0), Rotations.AngleAxis(90f, Vector3.UnitZ)),
-                    new Pose(new Vector3(0, 0.25f, 0), Quaternion.Identity),
-                    new Pose(new Vector3(0, 0.1f, 0), Quaternion.Identity),
+                    new RigidPose(new Vector3(0, 1, 0), Quaternion.Identity),
+                    new RigidPose(new Vector3(0, 0.5f, 0), Rotations.AngleAxis(90f, Vector3.UnitZ)),
+                    new RigidPose(new Vector3(0, 0.25f, 0), Quaternion.Identity),
+                    new RigidPose(new Vector3(0, 0.1f, 0), Quaternion.Identity),
                 },
                 new[] { false, false, false, true });
         }
@@ -39,7 +39,7 @@ namespace AvatarGo.Core.Tests
         public void LocalFromWorldInvertsForwardKinematics()
         {
             Skeleton s = Chain();
-            var pose = new SkeletonPose(s) { Origin = new Pose(new Vector3(3, 0, -2), Rotations.AngleAxis(33f, Vector3.UnitY)) };
+            var pose = new SkeletonPose(s) { Origin = new RigidPose(new Vector3(3, 0, -2), Rotations.AngleAxis(33f, Vector3.UnitY)) };
             pose.Local[1] = pose.Local[1].WithRotation(Rotations.AngleAxis(-20f, Vector3.UnitX));
             pose.UpdateWorld();
             var copy = new SkeletonPose(s) { Origin = pose.Origin };
@@ -51,11 +51,11 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void RejectsParentsAfterChildrenAndDuplicateNames()
         {
-            var rest = new[] { Pose.Identity, Pose.Identity };
+            var rest = new[] { RigidPose.Identity, RigidPose.Identity };
             Assert.Throws<ArgumentException>(() => new Skeleton(new[] { "a", "b" }, new[] { 1, -1 }, rest));
             Assert.Throws<ArgumentException>(() => new Skeleton(new[] { "a", "a" }, new[] { -1, 0 }, rest));
             Assert.Throws<ArgumentException>(() => new Skeleton(new[] { "a", "b" }, new[] { -1, 0 },
-                new[] { Pose.Identity, new Pose(new Vector3(float.NaN, 0, 0), Quaternion.Identity) }));
+                new[] { RigidPose.Identity, new RigidPose(new Vector3(float.NaN, 0, 0), Quaternion.Identity) }));
         }
 
         [Test]
@@ -64,15 +64,15 @@ namespace AvatarGo.Core.Tests
             Skeleton s = Chain();
             var map = new HumanoidMap(s, new[]
             {
-                new System.Collections.Generic.KeyValuePair<HumanBone, string>(HumanBone.Hips, "root"),
-                new System.Collections.Generic.KeyValuePair<HumanBone, string>(HumanBone.Spine, "a"),
+                new System.Collections.Generic.KeyValuePair<HumanoidBone, string>(HumanoidBone.Hips, "root"),
+                new System.Collections.Generic.KeyValuePair<HumanoidBone, string>(HumanoidBone.Spine, "a"),
             });
-            Assert.That(map[HumanBone.Spine], Is.EqualTo(1));
-            Assert.That(map[HumanBone.Head], Is.EqualTo(-1));
-            Assert.That(map.MissingRequired().Count, Is.EqualTo(HumanBones.Required.Length - 2));
-            Assert.That(map.BoneOf(0), Is.EqualTo(HumanBone.Hips));
-            Assert.That(HumanBones.Mirror(HumanBone.LeftIndexDistal), Is.EqualTo(HumanBone.RightIndexDistal));
-            Assert.That(HumanBones.Parent(HumanBone.RightThumbProximal), Is.EqualTo(HumanBone.RightHand));
+            Assert.That(map[HumanoidBone.Spine], Is.EqualTo(1));
+            Assert.That(map[HumanoidBone.Head], Is.EqualTo(-1));
+            Assert.That(map.MissingRequired().Count, Is.EqualTo(HumanoidBones.Required.Length - 2));
+            Assert.That(map.BoneOf(0), Is.EqualTo(HumanoidBone.Hips));
+            Assert.That(HumanoidBones.Mirror(HumanoidBone.LeftIndexDistal), Is.EqualTo(HumanoidBone.RightIndexDistal));
+            Assert.That(HumanoidBones.Parent(HumanoidBone.RightThumbProximal), Is.EqualTo(HumanoidBone.RightHand));
         }
     }
 }

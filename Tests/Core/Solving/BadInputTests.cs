@@ -12,7 +12,7 @@ namespace AvatarGo.Core.Tests
         {
             var wearer = new Wearer("mocapbank_30fps.bvh", 41);
             var calibrator = new Calibrator(wearer.Devices, wearer.Map);
-            wearer.StandInTPose(Pose.Identity);
+            wearer.StandInTPose(RigidPose.Identity);
             double t = 0;
             wearer.HoldAndPress(calibrator, ref t, 0.001f, 0.1f);
             wearer.StandInTPose(calibrator.Profile.Placement);
@@ -28,17 +28,17 @@ namespace AvatarGo.Core.Tests
             wearer.Sample(samples, 0.001f, 0.1f);
             solver.Solve(samples, ref targets);
             ik.Solve(in targets, pose);
-            int hips = calibrator.ScaledAvatar[HumanBone.Hips];
-            Pose goodHips = pose.World[hips];
+            int hips = calibrator.ScaledAvatar[HumanoidBone.Hips];
+            RigidPose goodHips = pose.World[hips];
 
             int pelvis = Array.IndexOf(Wearer.TrueRoles, DeviceRole.Pelvis);
             int hmd = Array.IndexOf(Wearer.TrueRoles, DeviceRole.Head);
             int hand = Array.IndexOf(Wearer.TrueRoles, DeviceRole.LeftHand);
             var bad = new[]
             {
-                new DeviceSample(new Pose(new Vector3(float.NaN, 1, 0), Quaternion.Identity), true),
-                new DeviceSample(new Pose(new Vector3(0, 1, 0), new Quaternion(0, 0, 0, 0)), true),
-                new DeviceSample(new Pose(new Vector3(float.PositiveInfinity, 0, 0), Quaternion.Identity), true),
+                new DeviceSample(new RigidPose(new Vector3(float.NaN, 1, 0), Quaternion.Identity), true),
+                new DeviceSample(new RigidPose(new Vector3(0, 1, 0), new Quaternion(0, 0, 0, 0)), true),
+                new DeviceSample(new RigidPose(new Vector3(float.PositiveInfinity, 0, 0), Quaternion.Identity), true),
                 DeviceSample.Lost,
             };
             foreach (DeviceSample garbage in bad)
@@ -52,7 +52,7 @@ namespace AvatarGo.Core.Tests
                 Assert.That(targets.LeftHand.IsActive, Is.False);
                 ik.Solve(in targets, pose);
                 Approx.Near(goodHips, pose.World[hips], 1e-6f, 1e-3f, "hips keep their last good pose");
-                foreach (Pose p in pose.World)
+                foreach (RigidPose p in pose.World)
                 {
                     Assert.That(p.IsValid, Is.True, "no NaN anywhere in the avatar");
                 }

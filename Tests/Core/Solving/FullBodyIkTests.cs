@@ -17,7 +17,7 @@ namespace AvatarGo.Core.Tests
         {
             public BvhClip Clip;
             public HumanoidMap Map;
-            public Pose[] Local, World;
+            public RigidPose[] Local, World;
             public Vector3 RestRootToHead;
             public Quaternion RestHipsRotation;
 
@@ -25,20 +25,20 @@ namespace AvatarGo.Core.Tests
             {
                 Clip = BvhReader.ReadFile(TestData.SharedMocap(clipName), new BvhReadOptions { ToMetres = true });
                 Map = HumanoidNaming.Detect(Clip.Skeleton);
-                Local = new Pose[Clip.Skeleton.JointCount];
-                World = new Pose[Clip.Skeleton.JointCount];
+                Local = new RigidPose[Clip.Skeleton.JointCount];
+                World = new RigidPose[Clip.Skeleton.JointCount];
                 var rest = new SkeletonPose(Clip.Skeleton);
-                RestRootToHead = rest.World[Map[HumanBone.Head]].Position - rest.World[Map[HumanBone.Hips]].Position;
-                RestHipsRotation = rest.World[Map[HumanBone.Hips]].Rotation;
+                RestRootToHead = rest.World[Map[HumanoidBone.Head]].Position - rest.World[Map[HumanoidBone.Hips]].Position;
+                RestHipsRotation = rest.World[Map[HumanoidBone.Hips]].Rotation;
             }
 
-            public int this[HumanBone b] => Map[b];
+            public int this[HumanoidBone b] => Map[b];
 
             /// <summary>Loads frame <paramref name="frame"/>'s truth and fills the targets from it.</summary>
             public void Targets(int frame, ref BodyTargets t)
             {
                 Clip.GetWorldPoses(frame, Local, World);
-                Pose hips = World[Map[HumanBone.Hips]], head = World[Map[HumanBone.Head]];
+                RigidPose hips = World[Map[HumanoidBone.Hips]], head = World[Map[HumanoidBone.Head]];
                 t.Hips = hips;
                 t.HipsActive = true;
                 t.Head = head;
@@ -46,10 +46,10 @@ namespace AvatarGo.Core.Tests
                 // The paper's α: from the rest root-to-head vector turned with the root, to the current one.
                 Vector3 w0 = Vector3.Transform(RestRootToHead, hips.Rotation * Quaternion.Inverse(RestHipsRotation));
                 t.SpineBend = Rotations.FromTo(w0, head.Position - hips.Position);
-                t.LeftFoot = new LimbTarget(World[Map[HumanBone.LeftFoot]], World[Map[HumanBone.LeftLowerLeg]].Position);
-                t.RightFoot = new LimbTarget(World[Map[HumanBone.RightFoot]], World[Map[HumanBone.RightLowerLeg]].Position);
-                t.LeftHand = new LimbTarget(World[Map[HumanBone.LeftHand]], World[Map[HumanBone.LeftLowerArm]].Position);
-                t.RightHand = new LimbTarget(World[Map[HumanBone.RightHand]], World[Map[HumanBone.RightLowerArm]].Position);
+                t.LeftFoot = new LimbTarget(World[Map[HumanoidBone.LeftFoot]], World[Map[HumanoidBone.LeftLowerLeg]].Position);
+                t.RightFoot = new LimbTarget(World[Map[HumanoidBone.RightFoot]], World[Map[HumanoidBone.RightLowerLeg]].Position);
+                t.LeftHand = new LimbTarget(World[Map[HumanoidBone.LeftHand]], World[Map[HumanoidBone.LeftLowerArm]].Position);
+                t.RightHand = new LimbTarget(World[Map[HumanoidBone.RightHand]], World[Map[HumanoidBone.RightLowerArm]].Position);
             }
         }
 
@@ -60,7 +60,7 @@ namespace AvatarGo.Core.Tests
             return copy[copy.Length / 2];
         }
 
-        private static float Error(SkeletonPose pose, Truth truth, HumanBone bone) =>
+        private static float Error(SkeletonPose pose, Truth truth, HumanoidBone bone) =>
             Vector3.Distance(pose.World[truth[bone]].Position, truth.World[truth[bone]].Position);
 
         /// <summary>
@@ -91,17 +91,17 @@ namespace AvatarGo.Core.Tests
                 pose.ResetToRest();
                 IkReport r = ik.Solve(in targets, pose);
                 string at = $"{clipName} frame {f}";
-                Approx.Near(targets.Hips, pose.World[truth[HumanBone.Hips]], 1e-5f, 0.01f, at + " hips");
-                Approx.Near(targets.Head.Rotation, pose.World[truth[HumanBone.Head]].Rotation, 0.01f, at + " head rotation");
-                float head = Error(pose, truth, HumanBone.Head);
+                Approx.Near(targets.Hips, pose.World[truth[HumanoidBone.Hips]], 1e-5f, 0.01f, at + " hips");
+                Approx.Near(targets.Head.Rotation, pose.World[truth[HumanoidBone.Head]].Rotation, 0.01f, at + " head rotation");
+                float head = Error(pose, truth, HumanoidBone.Head);
                 Assert.That(r.HeadDistanceLeft, Is.EqualTo(head).Within(1e-5f), at + " reported head distance");
                 if (head > 0.001f) headMissed++;
                 Assert.That(head, Is.LessThan(0.01f), at + " head (m)");
-                foreach (HumanBone b in new[] { HumanBone.LeftFoot, HumanBone.RightFoot, HumanBone.LeftLowerLeg, HumanBone.RightLowerLeg })
+                foreach (HumanoidBone b in new[] { HumanoidBone.LeftFoot, HumanoidBone.RightFoot, HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg })
                     Assert.That(Error(pose, truth, b), Is.LessThan(1e-4f), $"{at} {b} (m)");
-                Approx.Near(targets.LeftFoot.Goal.Rotation, pose.World[truth[HumanBone.LeftFoot]].Rotation, 0.01f, at + " left foot rotation");
+                Approx.Near(targets.LeftFoot.Goal.Rotation, pose.World[truth[HumanoidBone.LeftFoot]].Rotation, 0.01f, at + " left foot rotation");
                 // A reached hand is on its goal (within the 1 mm tolerance); an unreached one says so with the true distance.
-                foreach (var (bone, result) in new[] { (HumanBone.LeftHand, r.LeftHand), (HumanBone.RightHand, r.RightHand) })
+                foreach (var (bone, result) in new[] { (HumanoidBone.LeftHand, r.LeftHand), (HumanoidBone.RightHand, r.RightHand) })
                 {
                     float e = Error(pose, truth, bone);
                     Assert.That(result.DistanceLeft, Is.EqualTo(e).Within(1e-5f), $"{at} {bone} reported distance");
@@ -109,7 +109,7 @@ namespace AvatarGo.Core.Tests
                 }
                 if (!r.LeftHand.Reached || !r.RightHand.Reached) unreached++;
                 Assert.That(r.LeftFoot.Reached && r.RightFoot.Reached, Is.True, at + " feet");
-                elbows[f] = 0.5f * (Error(pose, truth, HumanBone.LeftLowerArm) + Error(pose, truth, HumanBone.RightLowerArm));
+                elbows[f] = 0.5f * (Error(pose, truth, HumanoidBone.LeftLowerArm) + Error(pose, truth, HumanoidBone.RightLowerArm));
             }
             TestContext.WriteLine($"{clipName}: head over 1 mm {headMissed}/{frames}, unreached {unreached}, elbow median {Median(elbows) * 1000f} max {elbows.Max() * 1000f}");
             // The head: within 1 mm in nearly all frames (the rest are poses the even bend plus polishing leaves a
@@ -136,10 +136,10 @@ namespace AvatarGo.Core.Tests
             Skeleton s = truth.Clip.Skeleton;
             var limbs = new[]
             {
-                (HumanBone.LeftUpperLeg, HumanBone.LeftLowerLeg, HumanBone.LeftFoot),
-                (HumanBone.RightUpperLeg, HumanBone.RightLowerLeg, HumanBone.RightFoot),
-                (HumanBone.LeftUpperArm, HumanBone.LeftLowerArm, HumanBone.LeftHand),
-                (HumanBone.RightUpperArm, HumanBone.RightLowerArm, HumanBone.RightHand),
+                (HumanoidBone.LeftUpperLeg, HumanoidBone.LeftLowerLeg, HumanoidBone.LeftFoot),
+                (HumanoidBone.RightUpperLeg, HumanoidBone.RightLowerLeg, HumanoidBone.RightFoot),
+                (HumanoidBone.LeftUpperArm, HumanoidBone.LeftLowerArm, HumanoidBone.LeftHand),
+                (HumanoidBone.RightUpperArm, HumanoidBone.RightLowerArm, HumanoidBone.RightHand),
             };
             var chains = new LimbChain[limbs.Length];
             for (int i = 0; i < limbs.Length; i++) chains[i] = new LimbChain(s, truth[limbs[i].Item1], truth[limbs[i].Item2], truth[limbs[i].Item3]);
@@ -174,19 +174,19 @@ namespace AvatarGo.Core.Tests
             var targets = new BodyTargets();
             truth.Targets(10, ref targets);
             ik.Solve(in targets, pose);
-            var before = (Pose[])pose.Local.Clone();
+            var before = (RigidPose[])pose.Local.Clone();
             truth.Targets(200, ref targets);
             targets.HipsActive = false;
             targets.HeadActive = false;
             targets.LeftHand.IsActive = false;
             targets.RightFoot.IsActive = false;
             IkReport r = ik.Solve(in targets, pose);
-            Assert.That(pose.Local[truth[HumanBone.Hips]], Is.EqualTo(before[truth[HumanBone.Hips]]), "hips");
-            foreach (HumanBone b in new[] { HumanBone.Spine, HumanBone.Chest, HumanBone.Neck, HumanBone.Head, HumanBone.LeftUpperArm, HumanBone.LeftLowerArm, HumanBone.LeftHand, HumanBone.RightUpperLeg, HumanBone.RightLowerLeg, HumanBone.RightFoot })
+            Assert.That(pose.Local[truth[HumanoidBone.Hips]], Is.EqualTo(before[truth[HumanoidBone.Hips]]), "hips");
+            foreach (HumanoidBone b in new[] { HumanoidBone.Spine, HumanoidBone.Chest, HumanoidBone.Neck, HumanoidBone.Head, HumanoidBone.LeftUpperArm, HumanoidBone.LeftLowerArm, HumanoidBone.LeftHand, HumanoidBone.RightUpperLeg, HumanoidBone.RightLowerLeg, HumanoidBone.RightFoot })
                 if (truth.Map.Has(b)) Assert.That(pose.Local[truth[b]], Is.EqualTo(before[truth[b]]), b.ToString());
             // The active limbs still follow their goals from where the body was left.
             Assert.That(r.LeftFoot.Reached, Is.True);
-            Approx.Near(targets.LeftFoot.Goal.Position, pose.World[truth[HumanBone.LeftFoot]].Position, 0.001f, "left foot");
+            Approx.Near(targets.LeftFoot.Goal.Position, pose.World[truth[HumanoidBone.LeftFoot]].Position, 0.001f, "left foot");
         }
 
         private static void SolveAll(FullBodyIk ik, BodyTargets[] frames, SkeletonPose pose, int passes)

@@ -19,12 +19,12 @@ namespace AvatarGo.Core.Tests
             var parents = new[] { -1, 0, 1, 2, 3, 4 };
             var rest = new[]
             {
-                new Pose(new Vector3(0.1f, 1.2f, -0.3f), RandomRotation(rng)),
-                new Pose(new Vector3(0.15f, -0.05f, 0.02f), RandomRotation(rng)),
-                new Pose(new Vector3(0.01f, -0.42f, 0.02f) * middleOffsetScale, RandomRotation(rng)),
-                new Pose(new Vector3(0.0f, -0.12f, 0.01f), RandomRotation(rng)),
-                new Pose(new Vector3(0.005f, -0.14f, 0.0f), RandomRotation(rng)),
-                new Pose(new Vector3(0.0f, -0.05f, 0.1f), RandomRotation(rng)),
+                new RigidPose(new Vector3(0.1f, 1.2f, -0.3f), RandomRotation(rng)),
+                new RigidPose(new Vector3(0.15f, -0.05f, 0.02f), RandomRotation(rng)),
+                new RigidPose(new Vector3(0.01f, -0.42f, 0.02f) * middleOffsetScale, RandomRotation(rng)),
+                new RigidPose(new Vector3(0.0f, -0.12f, 0.01f), RandomRotation(rng)),
+                new RigidPose(new Vector3(0.005f, -0.14f, 0.0f), RandomRotation(rng)),
+                new RigidPose(new Vector3(0.0f, -0.05f, 0.1f), RandomRotation(rng)),
             };
             return new Skeleton(names, parents, rest);
         }
@@ -85,7 +85,7 @@ namespace AvatarGo.Core.Tests
         /// <summary>Checks that World is what forward kinematics of Local gives (the solver kept them in step).</summary>
         private static void AssertWorldMatchesLocal(SkeletonPose pose)
         {
-            var world = new Pose[pose.Skeleton.JointCount];
+            var world = new RigidPose[pose.Skeleton.JointCount];
             pose.Skeleton.ComputeWorld(pose.Local, world, pose.Origin);
             for (int j = 0; j < world.Length; j++)
                 Approx.Near(world[j], pose.World[j], 1e-5f, 1e-3f, $"joint {j} world vs FK of local");
@@ -112,7 +112,7 @@ namespace AvatarGo.Core.Tests
                 while (Vectors.ProjectOnPlane(hint - a, Vector3.Normalize(goal - a)).Length() < 0.02f);
                 Quaternion goalRotation = RandomRotation(rng);
 
-                LimbResult r = TwoBoneIk.Solve(pose, chain, new Pose(goal, goalRotation), hint);
+                LimbResult r = TwoBoneIk.Solve(pose, chain, new RigidPose(goal, goalRotation), hint);
                 pose.UpdateWorld();
 
                 // 0.01 mm: the analytic solution is exact; what is left is float rounding at metre scale (~1e-6 m).
@@ -135,13 +135,13 @@ namespace AvatarGo.Core.Tests
         {
             // A limb in a straight line gives no bend plane of its own (the T-pose arm): the hint must give it.
             var names = new[] { "Root", "Middle", "End" };
-            var rest = new[] { Pose.FromPosition(new Vector3(0, 1, 0)), Pose.FromPosition(new Vector3(0, -0.4f, 0)), Pose.FromPosition(new Vector3(0, -0.4f, 0)) };
+            var rest = new[] { RigidPose.FromPosition(new Vector3(0, 1, 0)), RigidPose.FromPosition(new Vector3(0, -0.4f, 0)), RigidPose.FromPosition(new Vector3(0, -0.4f, 0)) };
             var s = new Skeleton(names, new[] { -1, 0, 1 }, rest);
             var pose = new SkeletonPose(s);
             var chain = new LimbChain(s, 0, 1, 2);
             Vector3 goal = new Vector3(0.2f, 0.5f, 0.3f);
             Vector3 hint = new Vector3(0, 0.6f, 1f);
-            LimbResult r = TwoBoneIk.Solve(pose, chain, new Pose(goal, Quaternion.Identity), hint);
+            LimbResult r = TwoBoneIk.Solve(pose, chain, new RigidPose(goal, Quaternion.Identity), hint);
             Assert.That(r.Reached, Is.True);
             Approx.Near(goal, pose.World[2].Position, 1e-5f, "end");
             Vector3 axis = Vector3.Normalize(goal - rest[0].Position);
@@ -164,7 +164,7 @@ namespace AvatarGo.Core.Tests
                 Vector3 goal = a + RandomDirection(rng) * distance;
                 Vector3 hint = a + RandomDirection(rng) * 0.5f;
 
-                LimbResult r = TwoBoneIk.Solve(pose, chain, new Pose(goal, Quaternion.Identity), hint);
+                LimbResult r = TwoBoneIk.Solve(pose, chain, new RigidPose(goal, Quaternion.Identity), hint);
                 pose.UpdateWorld();
 
                 Vector3 end = pose.World[End].Position;
@@ -194,7 +194,7 @@ namespace AvatarGo.Core.Tests
                 Vector3 a = pose.World[Root].Position;
                 Vector3 direction = RandomDirection(rng);
                 Vector3 goal = a + direction * fold * 0.5f * (float)rng.NextDouble();
-                LimbResult r = TwoBoneIk.Solve(pose, chain, new Pose(goal, Quaternion.Identity), a + RandomDirection(rng));
+                LimbResult r = TwoBoneIk.Solve(pose, chain, new RigidPose(goal, Quaternion.Identity), a + RandomDirection(rng));
                 pose.UpdateWorld();
                 AssertFinite(pose);
                 AssertLengthsKept(pose, s);
@@ -219,20 +219,20 @@ namespace AvatarGo.Core.Tests
             float nan = float.NaN;
             var goals = new[]
             {
-                new Pose(g, Quaternion.Identity),
-                new Pose(a, Quaternion.Identity),                                  // goal at the root
-                new Pose(new Vector3(nan, 0, 0), Quaternion.Identity),              // NaN goal
-                new Pose(new Vector3(float.PositiveInfinity, 0, 0), Quaternion.Identity),
-                new Pose(g, new Quaternion(0, 0, 0, 0)),                            // zero quaternion
-                new Pose(g, new Quaternion(nan, 0, 0, 1)),
-                new Pose(a + new Vector3(1e6f, 0, 0), Quaternion.Identity),         // very far
+                new RigidPose(g, Quaternion.Identity),
+                new RigidPose(a, Quaternion.Identity),                                  // goal at the root
+                new RigidPose(new Vector3(nan, 0, 0), Quaternion.Identity),              // NaN goal
+                new RigidPose(new Vector3(float.PositiveInfinity, 0, 0), Quaternion.Identity),
+                new RigidPose(g, new Quaternion(0, 0, 0, 0)),                            // zero quaternion
+                new RigidPose(g, new Quaternion(nan, 0, 0, 1)),
+                new RigidPose(a + new Vector3(1e6f, 0, 0), Quaternion.Identity),         // very far
             };
             var hints = new[]
             {
                 a + new Vector3(0, 0, 1), a, g, a + 0.5f * (g - a), a + 3f * (g - a), // on the root-goal line
                 new Vector3(nan, nan, nan), new Vector3(float.NegativeInfinity, 0, 0),
             };
-            foreach (Pose goal in goals)
+            foreach (RigidPose goal in goals)
                 foreach (Vector3 hint in hints)
                     for (int start = 0; start < 3; start++)
                     {
@@ -262,13 +262,13 @@ namespace AvatarGo.Core.Tests
             var pose = new SkeletonPose(s);
             var chain = new LimbChain(s, Root, Middle, End);
             Vector3 a = pose.World[Root].Position;
-            LimbResult r = TwoBoneIk.Solve(pose, chain, new Pose(a + new Vector3(0, -0.2f, 0.1f), Quaternion.Identity), a + Vector3.UnitZ);
+            LimbResult r = TwoBoneIk.Solve(pose, chain, new RigidPose(a + new Vector3(0, -0.2f, 0.1f), Quaternion.Identity), a + Vector3.UnitZ);
             pose.UpdateWorld();
             AssertFinite(pose);
             Assert.That(float.IsNaN(r.DistanceLeft), Is.False);
         }
 
-        private static void SolveMany(SkeletonPose pose, LimbChain chain, Pose goal, Vector3 hint, int count)
+        private static void SolveMany(SkeletonPose pose, LimbChain chain, RigidPose goal, Vector3 hint, int count)
         {
             for (int i = 0; i < count; i++) TwoBoneIk.Solve(pose, chain, goal, hint);
         }
@@ -280,7 +280,7 @@ namespace AvatarGo.Core.Tests
             Skeleton s = MakeLeg(rng);
             var pose = new SkeletonPose(s);
             var chain = new LimbChain(s, Root, Middle, End);
-            var goal = new Pose(pose.World[Root].Position + new Vector3(0.1f, -0.5f, 0.1f), Quaternion.Identity);
+            var goal = new RigidPose(pose.World[Root].Position + new Vector3(0.1f, -0.5f, 0.1f), Quaternion.Identity);
             Vector3 hint = pose.World[Root].Position + Vector3.UnitZ;
             SolveMany(pose, chain, goal, hint, 1000);
             // Windows inside a loop, the loop of solves in a method of its own that has run before: a long loop in

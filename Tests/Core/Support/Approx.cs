@@ -21,7 +21,7 @@ namespace AvatarGo.Core.Tests
         }
 
         /// <summary>Asserts both parts of two poses.</summary>
-        public static void Near(Pose expected, Pose actual, float metres, float degrees, string what = null)
+        public static void Near(RigidPose expected, RigidPose actual, float metres, float degrees, string what = null)
         {
             Near(expected.Position, actual.Position, metres, what);
             Near(expected.Rotation, actual.Rotation, degrees, what);

@@ -12,7 +12,7 @@ namespace AvatarGo.Core.Tests
         public readonly VirtualDeviceRig Rig;
         public readonly DeviceInfo[] Devices;
         private readonly Random _rng;
-        private readonly Core.Pose[] _devicePoses = new Core.Pose[6];
+        private readonly Core.RigidPose[] _devicePoses = new Core.RigidPose[6];
 
         public Wearer(string clip, int seed, DeviceMountings mountings = null)
         {
@@ -37,7 +37,7 @@ namespace AvatarGo.Core.Tests
         public static readonly DeviceRole[] TrueRoles =
             { DeviceRole.LeftFoot, DeviceRole.Head, DeviceRole.RightHand, DeviceRole.Pelvis, DeviceRole.LeftHand, DeviceRole.RightFoot };
 
-        public void StandInTPose(Core.Pose placement) => TPoser.Apply(Map, Pose, placement);
+        public void StandInTPose(Core.RigidPose placement) => TPoser.Apply(Map, Pose, placement);
 
         /// <summary>The device samples of the current pose, with noise, in <see cref="Devices"/> order.</summary>
         public void Sample(DeviceSample[] samples, float positionNoise, float rotationNoiseDegrees)
@@ -52,8 +52,8 @@ namespace AvatarGo.Core.Tests
         public void HoldAndPress(Calibrator calibrator, ref double time, float positionNoise, float rotationNoiseDegrees)
         {
             var samples = new DeviceSample[Devices.Length];
-            var none = new List<InputEvent>();
-            var press = new List<InputEvent> { new InputEvent(1, InputEventKind.TriggerPressed) };
+            var none = new List<DeviceEvent>();
+            var press = new List<DeviceEvent> { new DeviceEvent(1, DeviceEventKind.TriggerPressed) };
             for (int i = 0; i < 90; i++)
             {
                 Sample(samples, positionNoise, rotationNoiseDegrees);

@@ -38,9 +38,9 @@ public sealed class BvhInfoCommand : ICommand
         {
             int depth = 0;
             for (int p = s.GetParent(j); p >= 0; p = s.GetParent(p)) depth++;
-            HumanBone bone = map.BoneOf(j);
+            HumanoidBone bone = map.BoneOf(j);
             string channels = s.IsEndSite(j) ? "end site" : string.Join(" ", clip.GetChannels(j));
-            stdout.WriteLine($"  {new string(' ', depth * 2)}{s.GetName(j)}  [{channels}]{(bone != HumanBone.LastBone ? "  -> " + bone : "")}");
+            stdout.WriteLine($"  {new string(' ', depth * 2)}{s.GetName(j)}  [{channels}]{(bone != HumanoidBone.LastBone ? "  -> " + bone : "")}");
         }
         var missing = map.MissingRequired();
         stdout.WriteLine($"humanoid: {map.Count} bones mapped; missing required: {(missing.Count == 0 ? "none" : string.Join(", ", missing))}");

@@ -46,8 +46,8 @@ public sealed class BvhPositionsCommand : ICommand
         }
         stdout.WriteLine(line.ToString());
 
-        var local = new Pose[s.JointCount];
-        var world = new Pose[s.JointCount];
+        var local = new RigidPose[s.JointCount];
+        var world = new RigidPose[s.JointCount];
         for (int f = from; f < to; f++)
         {
             clip.GetWorldPoses(f, local, world);

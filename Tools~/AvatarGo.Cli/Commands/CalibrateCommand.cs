@@ -44,8 +44,8 @@ public sealed class CalibrateCommand : ICommand
         while (calibrator.State != CalibrationState.Calibrated && reader.ReadFrame(frame))
         {
             calibrator.Update(frame.Time, frame.Samples, frame.Events);
-            foreach (InputEvent e in frame.Events)
-                if (e.Kind == InputEventKind.TriggerPressed) presses++;
+            foreach (DeviceEvent e in frame.Events)
+                if (e.Kind == DeviceEventKind.TriggerPressed) presses++;
             if (calibrator.LastError != CalibrationError.None) lastRefusal = $"{calibrator.LastError}: {calibrator.LastMessage}";
         }
         bool ok = calibrator.State == CalibrationState.Calibrated;
@@ -76,7 +76,7 @@ public sealed class CalibrateCommand : ICommand
                     string line = $"  {role,-10} device {d.Id} ({d.Class}, {d.Serial})";
                     if (ok)
                     {
-                        Pose o = p.JointInDevice(role);
+                        RigidPose o = p.JointInDevice(role);
                         line += string.Create(inv, $": joint at ({o.Position.X * 1000:0.0}, {o.Position.Y * 1000:0.0}, {o.Position.Z * 1000:0.0}) mm in the device frame, rotated {Rotations.AngleDegrees(System.Numerics.Quaternion.Identity, o.Rotation):0.0} deg");
                     }
                     stdout.WriteLine(line);

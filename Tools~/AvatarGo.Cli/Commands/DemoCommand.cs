@@ -41,11 +41,11 @@ public sealed class DemoCommand : ICommand
             using (var writer = SessionWriter.Create(session, simulator.CreateHeader()))
                 simulator.Run(writer, p => progress.Report("simulating", p / 3));
 
-            var solved = new List<Pose[]>();
+            var solved = new List<RigidPose[]>();
             EvaluationReport exact, fixedOffsets;
             using (SessionReader reader = SessionReader.Open(session))
                 exact = SessionEvaluator.Evaluate(reader, OffsetMode.Exact, null,
-                    outBvh == null ? null : pose => solved.Add((Pose[])pose.Local.Clone()));
+                    outBvh == null ? null : pose => solved.Add((RigidPose[])pose.Local.Clone()));
             progress.Report("solving", 2f / 3);
             using (SessionReader reader = SessionReader.Open(session))
                 fixedOffsets = SessionEvaluator.Evaluate(reader, OffsetMode.Fixed);

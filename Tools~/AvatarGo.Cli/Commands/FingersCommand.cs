@@ -80,7 +80,7 @@ public sealed class FingersCommand : ICommand
     private static Dictionary<string, object> Measure(HumanoidMap rig, bool left, ControllerProfile profile)
     {
         var hand = new HandModel(rig, left);
-        Pose inHand = hand.ControllerInHand(profile);
+        RigidPose inHand = hand.ControllerInHand(profile);
         int[] rates = { 72, 90, 144 };
         var finals = new float[rates.Length][];
         double penetration = 0;
@@ -99,10 +99,10 @@ public sealed class FingersCommand : ICommand
             for (int i = 0; i <= n; i++)
             {
                 float t = i / (float)rates[r];
-                var wobble = new Pose(new Vector3(0.002f * MathF.Sin(5 * t), 0.002f * MathF.Cos(3 * t), 0.001f * MathF.Sin(7 * t)), Rotations.AngleAxis(3f * MathF.Sin(4 * t), Vector3.UnitY));
-                Pose controller = inHand * wobble;
+                var wobble = new RigidPose(new Vector3(0.002f * MathF.Sin(5 * t), 0.002f * MathF.Cos(3 * t), 0.001f * MathF.Sin(7 * t)), Rotations.AngleAxis(3f * MathF.Sin(4 * t), Vector3.UnitY));
+                RigidPose controller = inHand * wobble;
                 long before = GC.GetAllocatedBytesForCurrentThread();
-                solver.Solve(Pose.Identity, controller, GripMode.Hold);
+                solver.Solve(RigidPose.Identity, controller, GripMode.Hold);
                 bytes += GC.GetAllocatedBytesForCurrentThread() - before;
                 frames++;
                 iterations += solver.LastIterations;
@@ -130,17 +130,17 @@ public sealed class FingersCommand : ICommand
         // Timing: the 90 Hz sequence replayed 7 times, keeping the fastest pass (the machine may be busy with
         // other work; the fastest pass is the solver's own cost).
         var timed = new FingerSolver(hand, profile);
-        var poses = new Pose[181];
+        var poses = new RigidPose[181];
         for (int i = 0; i < poses.Length; i++)
         {
             float t = i / 90f;
-            poses[i] = inHand * new Pose(new Vector3(0.002f * MathF.Sin(5 * t), 0.002f * MathF.Cos(3 * t), 0.001f * MathF.Sin(7 * t)), Rotations.AngleAxis(3f * MathF.Sin(4 * t), Vector3.UnitY));
+            poses[i] = inHand * new RigidPose(new Vector3(0.002f * MathF.Sin(5 * t), 0.002f * MathF.Cos(3 * t), 0.001f * MathF.Sin(7 * t)), Rotations.AngleAxis(3f * MathF.Sin(4 * t), Vector3.UnitY));
         }
         double best = double.MaxValue;
         for (int pass = 0; pass < 7; pass++)
         {
             long t0 = Stopwatch.GetTimestamp();
-            for (int i = 0; i < poses.Length; i++) timed.Solve(Pose.Identity, poses[i], GripMode.Hold);
+            for (int i = 0; i < poses.Length; i++) timed.Solve(RigidPose.Identity, poses[i], GripMode.Hold);
             best = Math.Min(best, (Stopwatch.GetTimestamp() - t0) / (double)poses.Length);
         }
         double usPerHand = best * 1e6 / Stopwatch.Frequency;

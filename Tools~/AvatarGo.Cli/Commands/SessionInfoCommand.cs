@@ -35,8 +35,8 @@ public sealed class SessionInfoCommand : ICommand
         {
             if (double.IsNaN(first)) first = frame.Time;
             last = frame.Time;
-            foreach (InputEvent e in frame.Events)
-                if (e.Kind == InputEventKind.TriggerPressed) presses++; else releases++;
+            foreach (DeviceEvent e in frame.Events)
+                if (e.Kind == DeviceEventKind.TriggerPressed) presses++; else releases++;
             if (System.Array.IndexOf(frame.HasTruth, true) >= 0) truthFrames++;
             for (int i = 0; i < tracked.Length; i++)
             {

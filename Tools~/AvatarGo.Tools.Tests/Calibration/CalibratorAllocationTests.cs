@@ -23,8 +23,8 @@ public class CalibratorAllocationTests
         var clip = BvhReader.ReadFile(Paths.SharedMocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
         var calibrator = new Calibrator(devices, HumanoidNaming.Detect(clip.Skeleton));
         var samples = new DeviceSample[6];
-        for (int d = 0; d < 6; d++) samples[d] = new DeviceSample(new Pose(new Vector3(d * 0.1f, 1, 0), Quaternion.Identity), true);
-        var noEvents = new List<InputEvent>();
+        for (int d = 0; d < 6; d++) samples[d] = new DeviceSample(new RigidPose(new Vector3(d * 0.1f, 1, 0), Quaternion.Identity), true);
+        var noEvents = new List<DeviceEvent>();
         Feed(calibrator, samples, noEvents, 0, 2000); // warm up
         long best = long.MaxValue;
         for (int window = 0; window < 5; window++)
@@ -37,7 +37,7 @@ public class CalibratorAllocationTests
         Assert.That(calibrator.State, Is.EqualTo(CalibrationState.WaitingForTPose));
     }
 
-    private static void Feed(Calibrator c, DeviceSample[] samples, List<InputEvent> events, int start, int count)
+    private static void Feed(Calibrator c, DeviceSample[] samples, List<DeviceEvent> events, int start, int count)
     {
         for (int i = start; i < start + count; i++) c.Update(i / 90.0, samples, events);
     }

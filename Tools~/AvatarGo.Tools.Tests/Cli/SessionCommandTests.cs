@@ -21,10 +21,10 @@ public class SessionCommandTests
             {
                 f.Clear();
                 f.Time = i / 72.0;
-                f.Samples[0] = new DeviceSample(new Pose(new Vector3(0, 1.6f, 0), Quaternion.Identity), true);
-                f.Samples[1] = new DeviceSample(new Pose(new Vector3(0.3f, 1.1f, 0.2f), Quaternion.Identity), i % 4 != 0);
+                f.Samples[0] = new DeviceSample(new RigidPose(new Vector3(0, 1.6f, 0), Quaternion.Identity), true);
+                f.Samples[1] = new DeviceSample(new RigidPose(new Vector3(0.3f, 1.1f, 0.2f), Quaternion.Identity), i % 4 != 0);
                 if (i < 3) f.Trigger[1] = 0.5f;
-                if (i == 10) f.Events.Add(new InputEvent(2, InputEventKind.TriggerPressed));
+                if (i == 10) f.Events.Add(new DeviceEvent(2, DeviceEventKind.TriggerPressed));
                 w.WriteFrame(f);
             }
             if (!complete) { File.WriteAllText(path, text.ToString()); return path; }
@@ -90,12 +90,12 @@ public class SessionCommandTests
         try
         {
             var names = new[] { "Hips", "Spine", "Head" };
-            var rest = new[] { new Pose(new Vector3(0, 1, 0), Quaternion.Identity), new Pose(new Vector3(0, 0.2f, 0), Quaternion.Identity), new Pose(new Vector3(0, 0.5f, 0), Quaternion.Identity) };
+            var rest = new[] { new RigidPose(new Vector3(0, 1, 0), Quaternion.Identity), new RigidPose(new Vector3(0, 0.2f, 0), Quaternion.Identity), new RigidPose(new Vector3(0, 0.5f, 0), Quaternion.Identity) };
             var skeleton = new Skeleton(names, new[] { -1, 0, 1 }, rest);
             var map = new HumanoidMap(skeleton, new[]
             {
-                new System.Collections.Generic.KeyValuePair<HumanBone, string>(HumanBone.Hips, "Hips"),
-                new System.Collections.Generic.KeyValuePair<HumanBone, string>(HumanBone.Head, "Head"),
+                new System.Collections.Generic.KeyValuePair<HumanoidBone, string>(HumanoidBone.Hips, "Hips"),
+                new System.Collections.Generic.KeyValuePair<HumanoidBone, string>(HumanoidBone.Head, "Head"),
             });
             var h = new SessionHeader(90f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "H") }, new[] { DeviceRole.Head }, map);
             using (var w = SessionWriter.Create(path, h))
@@ -105,8 +105,8 @@ public class SessionCommandTests
                 {
                     f.Clear();
                     f.Time = i / 90.0;
-                    f.Samples[0] = new DeviceSample(new Pose(new Vector3(0, 1.7f, 0), Quaternion.Identity), true);
-                    if (i < 4) { f.Truth[(int)HumanBone.Head] = new Pose(new Vector3(0, 1.7f, 0), Quaternion.Identity); f.HasTruth[(int)HumanBone.Head] = true; }
+                    f.Samples[0] = new DeviceSample(new RigidPose(new Vector3(0, 1.7f, 0), Quaternion.Identity), true);
+                    if (i < 4) { f.Truth[(int)HumanoidBone.Head] = new RigidPose(new Vector3(0, 1.7f, 0), Quaternion.Identity); f.HasTruth[(int)HumanoidBone.Head] = true; }
                     w.WriteFrame(f);
                 }
             }

@@ -25,13 +25,13 @@ public class SessionAllocationTests
         f.Clear();
         f.Time = i / 90.0;
         for (int d = 0; d < f.Samples.Length; d++)
-            f.Samples[d] = new DeviceSample(new Pose(new Vector3(0.1f * d, 1f + 0.001f * i, -0.3f), Rotations.AngleAxis(i * 0.7f + d, Vector3.UnitY)), d != 4 || i % 7 != 0);
+            f.Samples[d] = new DeviceSample(new RigidPose(new Vector3(0.1f * d, 1f + 0.001f * i, -0.3f), Rotations.AngleAxis(i * 0.7f + d, Vector3.UnitY)), d != 4 || i % 7 != 0);
         f.Trigger[1] = (i % 100) / 100f;
         f.Grip[2] = 0.25f;
-        if (i % 90 == 5) f.Events.Add(new InputEvent(1, InputEventKind.TriggerPressed));
-        if (i % 90 == 50) f.Events.Add(new InputEvent(1, InputEventKind.TriggerReleased));
-        f.Truth[(int)HumanBone.Head] = f.Samples[0].Pose;
-        f.HasTruth[(int)HumanBone.Head] = true;
+        if (i % 90 == 5) f.Events.Add(new DeviceEvent(1, DeviceEventKind.TriggerPressed));
+        if (i % 90 == 50) f.Events.Add(new DeviceEvent(1, DeviceEventKind.TriggerReleased));
+        f.Truth[(int)HumanoidBone.Head] = f.Samples[0].Pose;
+        f.HasTruth[(int)HumanoidBone.Head] = true;
     }
 
     [Test]

@@ -26,20 +26,20 @@ public class SessionSpecExampleTests
         Assert.That(h.Devices[2].RuntimeRole, Is.EqualTo(DeviceRole.Pelvis));
         Assert.That(h.TrueRole(1), Is.EqualTo(DeviceRole.LeftHand));
         Assert.That(h.TruthHumanoid.Skeleton.JointCount, Is.EqualTo(4));
-        Assert.That(h.TruthHumanoid.NameOf(HumanBone.Spine), Is.EqualTo("Chest"));
+        Assert.That(h.TruthHumanoid.NameOf(HumanoidBone.Spine), Is.EqualTo("Chest"));
         Assert.That(h.TruthHumanoid.Skeleton.IsEndSite(3), Is.True);
         SessionFrame f = r.CreateFrame();
         Assert.That(r.ReadFrame(f), Is.True);
         Assert.That(f.Samples[2].IsTracked, Is.False);
         Assert.That(f.Samples[2].Pose.IsValid, Is.True, "the lost zero quaternion is delivered as a valid pose");
         Assert.That(f.Grip[1], Is.EqualTo(0.95f));
-        Assert.That(f.HasTruth[(int)HumanBone.Head], Is.True);
+        Assert.That(f.HasTruth[(int)HumanoidBone.Head], Is.True);
         Assert.That(r.ReadFrame(f), Is.True);
         Assert.That(f.Time, Is.EqualTo(1 / 90.0));
         Assert.That(f.Grip[1], Is.NaN);
         Assert.That(f.Events.Count, Is.EqualTo(1));
         Assert.That(f.Events[0].DeviceId, Is.EqualTo(1));
-        Assert.That(f.HasTruth[(int)HumanBone.Head], Is.False);
+        Assert.That(f.HasTruth[(int)HumanoidBone.Head], Is.False);
         Assert.That(r.ReadFrame(f), Is.False);
     }
 }

@@ -4,7 +4,7 @@ namespace AvatarGo.Core
     /// The humanoid bones, with the same names and numeric values as Unity's <c>HumanBodyBones</c>
     /// so the Unity shell can cast between them.
     /// </summary>
-    public enum HumanBone
+    public enum HumanoidBone
     {
         /// <summary>The hips: the root of the humanoid hierarchy.</summary>
         Hips = 0,

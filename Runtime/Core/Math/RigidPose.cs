@@ -9,7 +9,7 @@ namespace AvatarGo.Core
     /// of a child whose pose relative to <c>parent</c> is <c>local</c>.
     /// </summary>
     [Serializable]
-    public readonly struct Pose : IEquatable<Pose>
+    public readonly struct RigidPose : IEquatable<RigidPose>
     {
         /// <summary>The position, in metres.</summary>
         public readonly Vector3 Position;
@@ -18,20 +18,20 @@ namespace AvatarGo.Core
         public readonly Quaternion Rotation;
 
         /// <summary>Creates a pose from a position and a rotation.</summary>
-        public Pose(Vector3 position, Quaternion rotation)
+        public RigidPose(Vector3 position, Quaternion rotation)
         {
             Position = position;
             Rotation = rotation;
         }
 
         /// <summary>The pose at the origin with no rotation.</summary>
-        public static Pose Identity => new Pose(Vector3.Zero, Quaternion.Identity);
+        public static RigidPose Identity => new RigidPose(Vector3.Zero, Quaternion.Identity);
 
         /// <summary>A pose with only a translation.</summary>
-        public static Pose FromPosition(Vector3 position) => new Pose(position, Quaternion.Identity);
+        public static RigidPose FromPosition(Vector3 position) => new RigidPose(position, Quaternion.Identity);
 
         /// <summary>A pose with only a rotation.</summary>
-        public static Pose FromRotation(Quaternion rotation) => new Pose(Vector3.Zero, rotation);
+        public static RigidPose FromRotation(Quaternion rotation) => new RigidPose(Vector3.Zero, rotation);
 
         /// <summary>
         /// True when the position and rotation are finite and the rotation is a unit quaternion
@@ -40,16 +40,16 @@ namespace AvatarGo.Core
         public bool IsValid => Vectors.IsFinite(Position) && Rotations.IsUnit(Rotation);
 
         /// <summary>The inverse transform: <c>p.Inverse() * p == Identity</c>.</summary>
-        public Pose Inverse()
+        public RigidPose Inverse()
         {
             Quaternion inv = Quaternion.Conjugate(Rotation);
-            return new Pose(Vector3.Transform(-Position, inv), inv);
+            return new RigidPose(Vector3.Transform(-Position, inv), inv);
         }
 
         /// <summary>Composes two poses: <paramref name="local"/> expressed in <paramref name="parent"/>'s frame, returned in the frame <paramref name="parent"/> lives in.</summary>
-        public static Pose operator *(Pose parent, Pose local)
+        public static RigidPose operator *(RigidPose parent, RigidPose local)
         {
-            return new Pose(
+            return new RigidPose(
                 parent.Position + Vector3.Transform(local.Position, parent.Rotation),
                 Quaternion.Normalize(parent.Rotation * local.Rotation));
         }
@@ -69,31 +69,31 @@ namespace AvatarGo.Core
             Vector3.Transform(direction, Quaternion.Conjugate(Rotation));
 
         /// <summary>This pose expressed in the frame of <paramref name="reference"/>: <c>reference.Inverse() * this</c>.</summary>
-        public Pose RelativeTo(Pose reference) => reference.Inverse() * this;
+        public RigidPose RelativeTo(RigidPose reference) => reference.Inverse() * this;
 
         /// <summary>The same pose with another position.</summary>
-        public Pose WithPosition(Vector3 position) => new Pose(position, Rotation);
+        public RigidPose WithPosition(Vector3 position) => new RigidPose(position, Rotation);
 
         /// <summary>The same pose with another rotation.</summary>
-        public Pose WithRotation(Quaternion rotation) => new Pose(Position, rotation);
+        public RigidPose WithRotation(Quaternion rotation) => new RigidPose(Position, rotation);
 
         /// <summary>Interpolates position linearly and rotation spherically (shortest path).</summary>
-        public static Pose Lerp(Pose a, Pose b, float t) =>
-            new Pose(Vector3.Lerp(a.Position, b.Position, t), Quaternion.Slerp(a.Rotation, b.Rotation, t));
+        public static RigidPose Lerp(RigidPose a, RigidPose b, float t) =>
+            new RigidPose(Vector3.Lerp(a.Position, b.Position, t), Quaternion.Slerp(a.Rotation, b.Rotation, t));
 
         /// <summary>The same pose uniformly scaled about the origin (positions only).</summary>
-        public Pose Scaled(float scale) => new Pose(Position * scale, Rotation);
+        public RigidPose Scaled(float scale) => new RigidPose(Position * scale, Rotation);
 
         /// <inheritdoc/>
-        public bool Equals(Pose other) => Position.Equals(other.Position) && Rotation.Equals(other.Rotation);
+        public bool Equals(RigidPose other) => Position.Equals(other.Position) && Rotation.Equals(other.Rotation);
 
         /// <inheritdoc/>
-        public override bool Equals(object obj) => obj is Pose other && Equals(other);
+        public override bool Equals(object obj) => obj is RigidPose other && Equals(other);
 
         /// <inheritdoc/>
         public override int GetHashCode() => Position.GetHashCode() * 397 ^ Rotation.GetHashCode();
 
         /// <inheritdoc/>
-        public override string ToString() => $"Pose(position {Position}, rotation {Rotation})";
+        public override string ToString() => $"RigidPose(position {Position}, rotation {Rotation})";
     }
 }

@@ -4,12 +4,12 @@ using NUnit.Framework;
 
 namespace AvatarGo.Core.Tests
 {
-    public class PoseTests
+    public class RigidPoseTests
     {
-        private static Pose RandomPose(Random rng)
+        private static RigidPose RandomPose(Random rng)
         {
             var axis = new Vector3((float)rng.NextDouble() - .5f, (float)rng.NextDouble() - .5f, (float)rng.NextDouble() - .5f);
-            return new Pose(new Vector3((float)rng.NextDouble() * 4 - 2, (float)rng.NextDouble() * 2, (float)rng.NextDouble() * 4 - 2),
+            return new RigidPose(new Vector3((float)rng.NextDouble() * 4 - 2, (float)rng.NextDouble() * 2, (float)rng.NextDouble() * 4 - 2),
                 Rotations.AngleAxis((float)rng.NextDouble() * 360f, axis));
         }
 
@@ -19,9 +19,9 @@ namespace AvatarGo.Core.Tests
             var rng = new Random(1);
             for (int i = 0; i < 100; i++)
             {
-                Pose p = RandomPose(rng);
-                Approx.Near(Pose.Identity, p.Inverse() * p, 1e-5f, 1e-2f);
-                Approx.Near(Pose.Identity, p * p.Inverse(), 1e-5f, 1e-2f);
+                RigidPose p = RandomPose(rng);
+                Approx.Near(RigidPose.Identity, p.Inverse() * p, 1e-5f, 1e-2f);
+                Approx.Near(RigidPose.Identity, p * p.Inverse(), 1e-5f, 1e-2f);
             }
         }
 
@@ -31,7 +31,7 @@ namespace AvatarGo.Core.Tests
             var rng = new Random(2);
             for (int i = 0; i < 100; i++)
             {
-                Pose a = RandomPose(rng), b = RandomPose(rng);
+                RigidPose a = RandomPose(rng), b = RandomPose(rng);
                 var point = new Vector3(0.1f, -0.3f, 0.7f);
                 Approx.Near(a.TransformPoint(b.TransformPoint(point)), (a * b).TransformPoint(point), 1e-5f);
                 Approx.Near(point, a.InverseTransformPoint(a.TransformPoint(point)), 1e-5f);
@@ -42,11 +42,11 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void IsValidRejectsNaNAndNonUnitRotations()
         {
-            Assert.That(Pose.Identity.IsValid, Is.True);
-            Assert.That(new Pose(new Vector3(float.NaN, 0, 0), Quaternion.Identity).IsValid, Is.False);
-            Assert.That(new Pose(new Vector3(float.PositiveInfinity, 0, 0), Quaternion.Identity).IsValid, Is.False);
-            Assert.That(new Pose(Vector3.Zero, new Quaternion(0, 0, 0, 0)).IsValid, Is.False);
-            Assert.That(new Pose(Vector3.Zero, new Quaternion(0, 0, 0, 1.5f)).IsValid, Is.False);
+            Assert.That(RigidPose.Identity.IsValid, Is.True);
+            Assert.That(new RigidPose(new Vector3(float.NaN, 0, 0), Quaternion.Identity).IsValid, Is.False);
+            Assert.That(new RigidPose(new Vector3(float.PositiveInfinity, 0, 0), Quaternion.Identity).IsValid, Is.False);
+            Assert.That(new RigidPose(Vector3.Zero, new Quaternion(0, 0, 0, 0)).IsValid, Is.False);
+            Assert.That(new RigidPose(Vector3.Zero, new Quaternion(0, 0, 0, 1.5f)).IsValid, Is.False);
         }
     }
 }

@@ -1,7 +1,7 @@
 namespace AvatarGo.Core
 {
     /// <summary>A discrete input event from a device.</summary>
-    public enum InputEventKind
+    public enum DeviceEventKind
     {
         /// <summary>The trigger crossed its press threshold.</summary>
         TriggerPressed = 0,
