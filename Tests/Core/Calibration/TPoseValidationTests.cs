@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using NUnit.Framework;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Core.Tests
 {

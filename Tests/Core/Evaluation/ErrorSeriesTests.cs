@@ -1,4 +1,5 @@
 using NUnit.Framework;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Core.Tests
 {

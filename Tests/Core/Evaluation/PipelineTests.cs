@@ -1,5 +1,6 @@
 using System.IO;
 using NUnit.Framework;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Core.Tests
 {
@@ -12,9 +13,16 @@ namespace AvatarGo.Core.Tests
     /// </summary>
     public class PipelineTests
     {
-        private static (EvaluationReport exact, EvaluationReport fixedOffsets) Run(string clipName, int seed, HumanoidMap avatar = null)
+        private static (EvaluationReport exact, EvaluationReport fixedOffsets) Run(string clipName, int seed, HumanoidMap avatar = null) =>
+            RunFile(TestData.Mocap(clipName), seed, avatar);
+
+        private static (EvaluationReport exact, EvaluationReport fixedOffsets) RunShared(string clipName, int seed) =>
+            RunFile(TestData.SharedMocap(clipName), seed, null);
+
+        private static (EvaluationReport exact, EvaluationReport fixedOffsets) RunFile(string clipPath, int seed, HumanoidMap avatar)
         {
-            BvhClip clip = BvhReader.ReadFile(TestData.SharedMocap(clipName), new BvhReadOptions { ToMetres = true });
+            string clipName = System.IO.Path.GetFileName(clipPath);
+            BvhClip clip = BvhReader.ReadFile(clipPath, new BvhReadOptions { ToMetres = true });
             var simulator = new SessionSimulator(clip, new SimulationOptions { Seed = seed });
             var text = new StringWriter();
             using (var writer = new SessionWriter(text, simulator.CreateHeader())) simulator.Run(writer);
@@ -55,7 +63,7 @@ namespace AvatarGo.Core.Tests
         [Test, Category("Slow")]
         public void RigifyLongClipFollows()
         {
-            var (exact, fixedOffsets) = Run("rigify_6channel_24fps.bvh", 3);
+            var (exact, fixedOffsets) = RunShared("rigify_6channel_24fps.bvh", 3);
             // The MPJPE bound, 20 mm, with the least margin of the three clips (this seed: 19.3 mm; 20.8 mm
             // before the neck followed the head): the elbows and knees (43 mm median) and the chest, which the six
             // devices do not observe, and thighs that slide ±1 cm in this clip's data.
@@ -65,7 +73,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void LongerLegsStayStraightWithExactOffsetsAndBendWithFixedOnes()
         {
-            BvhClip clip = BvhReader.ReadFile(TestData.SharedMocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
             HumanoidMap longLegs = Proportions.ScaleLimbs(HumanoidNaming.Detect(clip.Skeleton), 1.10f, 1f);
             var (exact, fixedOffsets) = Run("mocapbank_30fps.bvh", 4, longLegs);
             // The paper's Figure 2: with exact offsets the knees bend exactly as the wearer's (median ≤ 5°);

@@ -3,13 +3,14 @@ using System.Collections.Generic;
 using System.IO;
 using System.Numerics;
 using NUnit.Framework;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Core.Tests
 {
     public class FingerSolverTests
     {
         private static HumanoidMap MixamoHand() =>
-            HumanoidNaming.Detect(BvhReader.ReadFile(TestData.SharedMocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true }).Skeleton);
+            HumanoidNaming.Detect(BvhReader.ReadFile(TestData.Mocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true }).Skeleton);
 
         private static IEnumerable<ControllerProfile> Profiles()
         {

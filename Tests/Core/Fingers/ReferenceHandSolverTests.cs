@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using System.Numerics;
 using NUnit.Framework;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Core.Tests
 {

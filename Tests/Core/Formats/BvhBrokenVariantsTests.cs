@@ -13,7 +13,7 @@ namespace AvatarGo.Core.Tests
     {
         private static List<string> Lines()
         {
-            string text = File.ReadAllText(TestData.SharedMocap("mixamo_fingers_30fps.bvh"));
+            string text = File.ReadAllText(TestData.Mocap("mixamo_fingers_30fps.bvh"));
             return new List<string>(text.Replace("\r\n", "\n").TrimEnd('\n').Split('\n'));
         }
 

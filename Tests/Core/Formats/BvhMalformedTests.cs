@@ -9,7 +9,7 @@ namespace AvatarGo.Core.Tests
     public class BvhMalformedTests
     {
         private static string[] Lines() =>
-            File.ReadAllText(TestData.SharedMocap("mocapbank_30fps.bvh")).Replace("\r\n", "\n").TrimEnd('\n').Split('\n');
+            File.ReadAllText(TestData.Mocap("mocapbank_30fps.bvh")).Replace("\r\n", "\n").TrimEnd('\n').Split('\n');
 
         private static void AssertFailsAtLine(string text, int expectedLine, string because)
         {

@@ -9,13 +9,13 @@ namespace AvatarGo.Core.Tests
 {
     public class BvhReaderTests
     {
-        // The shared clips as their README describes them: file, frames, frame rate.
+        // The shipped clips (Tests/Core/Data~): file, frames, frame rate (the Rigify one is the first 240 frames of the shared clip).
         [TestCase("mocapbank_30fps.bvh", 455, 30f)]
         [TestCase("mixamo_fingers_30fps.bvh", 69, 30f)]
-        [TestCase("rigify_6channel_24fps.bvh", 3089, 24f)]
+        [TestCase("rigify_6channel_24fps_first240.bvh", 240, 24f)]
         public void SharedClipsLoadWithTheirHumanoidMapping(string file, int frames, float rate)
         {
-            BvhClip clip = BvhReader.ReadFile(TestData.SharedMocap(file));
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap(file));
             Assert.That(clip.FrameCount, Is.EqualTo(frames));
             Assert.That(clip.FrameRate, Is.EqualTo(rate).Within(0.01f));
             HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
@@ -25,7 +25,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void MocapBankMapsCmuStyleNames()
         {
-            HumanoidMap map = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.SharedMocap("mocapbank_30fps.bvh")).Skeleton);
+            HumanoidMap map = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh")).Skeleton);
             Assert.That(map.NameOf(HumanoidBone.LeftShoulder), Is.EqualTo("LeftCollar"));
             Assert.That(map.NameOf(HumanoidBone.LeftUpperArm), Is.EqualTo("LeftShoulder"));
             Assert.That(map.NameOf(HumanoidBone.LeftLowerArm), Is.EqualTo("LeftElbow"));
@@ -39,7 +39,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void MixamoMapsEveryFingerAndRigifyUsesEndSitesForHands()
         {
-            HumanoidMap mixamo = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.SharedMocap("mixamo_fingers_30fps.bvh")).Skeleton);
+            HumanoidMap mixamo = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.Mocap("mixamo_fingers_30fps.bvh")).Skeleton);
             for (int f = 0; f < 5; f++)
             for (int p = 0; p < 3; p++)
             {
@@ -50,7 +50,7 @@ namespace AvatarGo.Core.Tests
             Assert.That(mixamo.NameOf(HumanoidBone.LeftUpperArm), Is.EqualTo("mixamorig:LeftArm"));
             Assert.That(mixamo.NameOf(HumanoidBone.UpperChest), Is.EqualTo("mixamorig:Spine2"));
 
-            HumanoidMap rigify = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.SharedMocap("rigify_6channel_24fps.bvh")).Skeleton);
+            HumanoidMap rigify = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.Mocap("rigify_6channel_24fps_first240.bvh")).Skeleton);
             Assert.That(rigify.NameOf(HumanoidBone.Hips), Is.EqualTo("pelvis"));
             Assert.That(rigify.NameOf(HumanoidBone.LeftUpperLeg), Is.EqualTo("thigh.L"));
             Assert.That(rigify.NameOf(HumanoidBone.LeftHand), Is.EqualTo("forearm.L_End"));
@@ -60,7 +60,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void OverridesWinOverDetection()
         {
-            Skeleton s = BvhReader.ReadFile(TestData.SharedMocap("mocapbank_30fps.bvh")).Skeleton;
+            Skeleton s = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh")).Skeleton;
             var map = HumanoidNaming.Detect(s, new Dictionary<string, HumanoidBone> { { "Chest2", HumanoidBone.UpperChest } });
             Assert.That(map.NameOf(HumanoidBone.UpperChest), Is.EqualTo("Chest2"));
             Assert.That(map.NameOf(HumanoidBone.Chest), Is.Not.EqualTo("Chest2"));
@@ -109,9 +109,9 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void WriteThenReadRoundTrips()
         {
-            foreach (string file in new[] { "mocapbank_30fps.bvh", "mixamo_fingers_30fps.bvh", "rigify_6channel_24fps.bvh" })
+            foreach (string file in new[] { "mocapbank_30fps.bvh", "mixamo_fingers_30fps.bvh", "rigify_6channel_24fps_first240.bvh" })
             {
-                BvhClip a = BvhReader.ReadFile(TestData.SharedMocap(file));
+                BvhClip a = BvhReader.ReadFile(TestData.Mocap(file));
                 var text = new StringWriter();
                 BvhWriter.Write(text, a);
                 BvhClip b = BvhReader.Read(new StringReader(text.ToString()), "written");
@@ -128,7 +128,7 @@ namespace AvatarGo.Core.Tests
         public void PosesWrittenAsEulerRoundTripThroughEveryAxisOrder()
         {
             // FromPoses decomposes rotations into ZXY Euler angles; reading back must give the same world joints.
-            BvhClip clip = BvhReader.ReadFile(TestData.SharedMocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true });
             var frames = new List<RigidPose[]>();
             for (int f = 0; f < clip.FrameCount; f++)
             {
@@ -180,7 +180,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void CrlfTabsAndLfReadTheSame()
         {
-            string original = File.ReadAllText(TestData.SharedMocap("mocapbank_30fps.bvh"));
+            string original = File.ReadAllText(TestData.Mocap("mocapbank_30fps.bvh"));
             string lf = original.Replace("\r\n", "\n");
             string tabs = lf.Replace("  ", "\t");
             BvhClip a = BvhReader.Read(new StringReader(original), "crlf");
@@ -198,9 +198,9 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void GuessesUnits()
         {
-            Assert.That(BvhReader.ReadFile(TestData.SharedMocap("mocapbank_30fps.bvh")).GuessMetresPerUnit(), Is.EqualTo(0.01f));
-            Assert.That(BvhReader.ReadFile(TestData.SharedMocap("mixamo_fingers_30fps.bvh")).GuessMetresPerUnit(), Is.EqualTo(0.01f));
-            Assert.That(BvhReader.ReadFile(TestData.SharedMocap("rigify_6channel_24fps.bvh")).GuessMetresPerUnit(), Is.EqualTo(1f));
+            Assert.That(BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh")).GuessMetresPerUnit(), Is.EqualTo(0.01f));
+            Assert.That(BvhReader.ReadFile(TestData.Mocap("mixamo_fingers_30fps.bvh")).GuessMetresPerUnit(), Is.EqualTo(0.01f));
+            Assert.That(BvhReader.ReadFile(TestData.Mocap("rigify_6channel_24fps_first240.bvh")).GuessMetresPerUnit(), Is.EqualTo(1f));
         }
     }
 }

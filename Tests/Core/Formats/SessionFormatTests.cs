@@ -87,7 +87,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void GroundTruthSkeletonAndJointsRoundTrip()
         {
-            BvhClip clip = BvhReader.ReadFile(TestData.SharedMocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
             HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
             SessionHeader h = Header(map, roles: true);
             var text = new StringWriter();

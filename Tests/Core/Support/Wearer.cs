@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Core.Tests
 {
@@ -16,7 +17,7 @@ namespace AvatarGo.Core.Tests
 
         public Wearer(string clip, int seed, DeviceMountings mountings = null)
         {
-            BvhClip c = BvhReader.ReadFile(TestData.SharedMocap(clip), new BvhReadOptions { ToMetres = true });
+            BvhClip c = BvhReader.ReadFile(TestData.Mocap(clip), new BvhReadOptions { ToMetres = true });
             Map = HumanoidNaming.Detect(c.Skeleton);
             Pose = new SkeletonPose(c.Skeleton);
             _rng = new Random(seed);

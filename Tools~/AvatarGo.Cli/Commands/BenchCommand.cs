@@ -7,6 +7,7 @@ using System.Linq;
 using System.Runtime.InteropServices;
 using System.Text.Json;
 using AvatarGo.Core;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Cli.Commands;
 

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using AvatarGo.Core;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Cli.Commands;
 

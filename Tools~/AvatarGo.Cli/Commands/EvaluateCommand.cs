@@ -4,6 +4,7 @@ using System.IO;
 using System.Linq;
 using System.Text.Json;
 using AvatarGo.Core;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Cli.Commands;
 

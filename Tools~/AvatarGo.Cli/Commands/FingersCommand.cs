@@ -7,6 +7,7 @@ using System.Linq;
 using System.Numerics;
 using System.Text.Json;
 using AvatarGo.Core;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Cli.Commands;
 
@@ -20,7 +21,7 @@ public sealed class FingersCommand : ICommand
 
         Holds each controller profile (Runtime/ControllerProfiles/*.json) in both hands of each avatar
         hand (default: the reference hand built in code, ReferenceHandRig, and the Mixamo hand of the
-        shared clip mixamo_fingers_30fps.bvh when ../shared is present) while the controller wobbles in
+        clip mixamo_fingers_30fps.bvh the package ships in Tests/Core/Data~) while the controller wobbles in
         the hand for two seconds (2 mm, 3 deg), solving at 72,
         90 and 144 Hz, and reports per profile and hand: the deepest penetration of a finger into the
         surface (mm), the median and largest fingertip gap (mm), iterations and microseconds per frame
@@ -48,7 +49,7 @@ public sealed class FingersCommand : ICommand
         if (profiles.Count == 0) throw new UsageException($"no controller profile named '{only}' in {profilesDir}");
         var rigs = new List<(string Name, HumanoidMap Map)>();
         if (handFile == null || handFile == "reference") rigs.Add(("reference", ReferenceHandRig.Build()));
-        if (handFile == null) handFile = FindSharedHand();
+        if (handFile == null) handFile = FindMixamoHand();
         if (handFile != null && handFile != "reference")
             rigs.Add((Path.GetFileName(handFile), HumanoidNaming.Detect(BvhReader.ReadFile(handFile, new BvhReadOptions { ToMetres = true }).Skeleton)));
 
@@ -174,11 +175,11 @@ public sealed class FingersCommand : ICommand
         throw new DirectoryNotFoundException("Runtime/ControllerProfiles not found above the tool's folder");
     }
 
-    private static string FindSharedHand()
+    private static string FindMixamoHand()
     {
         for (string dir = AppContext.BaseDirectory; dir != null; dir = Path.GetDirectoryName(dir))
         {
-            string candidate = Path.Combine(dir, "..", "shared", "mocap", "mixamo_fingers_30fps.bvh");
+            string candidate = Path.Combine(dir, "Tests", "Core", "Data~", "mixamo_fingers_30fps.bvh");
             if (File.Exists(candidate)) return Path.GetFullPath(candidate);
         }
         return null;

@@ -20,7 +20,7 @@ public class CalibratorAllocationTests
             new DeviceInfo(0, DeviceClass.Hmd, "H"), new DeviceInfo(1, DeviceClass.Controller, "L"), new DeviceInfo(2, DeviceClass.Controller, "R"),
             new DeviceInfo(3, DeviceClass.Tracker, "P"), new DeviceInfo(4, DeviceClass.Tracker, "F1"), new DeviceInfo(5, DeviceClass.Tracker, "F2"),
         };
-        var clip = BvhReader.ReadFile(Paths.SharedMocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+        var clip = BvhReader.ReadFile(Paths.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
         var calibrator = new Calibrator(devices, HumanoidNaming.Detect(clip.Skeleton));
         var samples = new DeviceSample[6];
         for (int d = 0; d < 6; d++) samples[d] = new DeviceSample(new RigidPose(new Vector3(d * 0.1f, 1, 0), Quaternion.Identity), true);

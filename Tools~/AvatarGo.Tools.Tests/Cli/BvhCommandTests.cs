@@ -11,10 +11,10 @@ public class BvhCommandTests
 {
     [TestCase("mocapbank_30fps.bvh", 0.01)]
     [TestCase("mixamo_fingers_30fps.bvh", 1.0)]
-    [TestCase("rigify_6channel_24fps.bvh", 1000.0)]
+    [TestCase("rigify_6channel_24fps_first240.bvh", 1000.0)]
     public void PositionsAgreeWithAnIndependentForwardKinematics(string file, double scale)
     {
-        string path = Paths.SharedMocap(file);
+        string path = Paths.Mocap(file);
         var r = CliRunner.Run("bvh", "positions", path, "--scale", scale.ToString(CultureInfo.InvariantCulture));
         Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
         string[] rows = r.Stdout.TrimEnd().Split('\n');
@@ -41,19 +41,19 @@ public class BvhCommandTests
     [Test]
     public void FramesOptionSelectsARange()
     {
-        var r = CliRunner.Run("bvh", "positions", Paths.SharedMocap("mocapbank_30fps.bvh"), "--frames", "10:13");
+        var r = CliRunner.Run("bvh", "positions", Paths.Mocap("mocapbank_30fps.bvh"), "--frames", "10:13");
         Assert.That(r.ExitCode, Is.EqualTo(0));
         string[] rows = r.Stdout.TrimEnd().Split('\n');
         Assert.That(rows.Length, Is.EqualTo(4));
         StringAssert.StartsWith("10,", rows[1]);
         StringAssert.StartsWith("12,", rows[3]);
-        Assert.That(CliRunner.Run("bvh", "positions", Paths.SharedMocap("mocapbank_30fps.bvh"), "--frames", "5:999").ExitCode, Is.EqualTo(2));
+        Assert.That(CliRunner.Run("bvh", "positions", Paths.Mocap("mocapbank_30fps.bvh"), "--frames", "5:999").ExitCode, Is.EqualTo(2));
     }
 
     [Test]
     public void InfoShowsMappingAndNoMissingBones()
     {
-        var r = CliRunner.Run("bvh", "info", Paths.SharedMocap("mocapbank_30fps.bvh"));
+        var r = CliRunner.Run("bvh", "info", Paths.Mocap("mocapbank_30fps.bvh"));
         Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
         StringAssert.Contains("frames: 455", r.Stdout);
         StringAssert.Contains("LeftElbow  [Zrotation Xrotation Yrotation]  -> LeftLowerArm", r.Stdout);
@@ -63,7 +63,7 @@ public class BvhCommandTests
     [Test]
     public void BrokenFileIsAOneLineErrorWithExitCode1()
     {
-        string text = File.ReadAllText(Paths.SharedMocap("mocapbank_30fps.bvh"));
+        string text = File.ReadAllText(Paths.Mocap("mocapbank_30fps.bvh"));
         string path = Path.Combine(Path.GetTempPath(), "avatargo-broken-" + Guid.NewGuid().ToString("N") + ".bvh");
         File.WriteAllText(path, text.Substring(0, text.Length / 2));
         try

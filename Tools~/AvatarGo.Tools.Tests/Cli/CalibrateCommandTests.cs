@@ -14,7 +14,7 @@ public class CalibrateCommandTests
         string profile = session + ".profile.json";
         try
         {
-            Assert.That(CliRunner.Run("simulate", "--bvh", Paths.SharedMocap("mixamo_fingers_30fps.bvh"), "--out", session, "--seed", "9").ExitCode, Is.EqualTo(0));
+            Assert.That(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mixamo_fingers_30fps.bvh"), "--out", session, "--seed", "9").ExitCode, Is.EqualTo(0));
             var r = CliRunner.Run("calibrate", session, "--save", profile);
             Assert.That(r.ExitCode, Is.EqualTo(0), r.Stdout + r.Stderr);
             StringAssert.Contains("status: calibrated after 2 trigger press(es)", r.Stdout);

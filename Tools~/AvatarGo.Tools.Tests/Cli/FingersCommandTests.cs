@@ -40,7 +40,7 @@ public class FingersCommandTests
     [Test]
     public void ByDefaultMeasuresTheReferenceHandAndTheMixamoHand()
     {
-        Paths.SharedMocap("mixamo_fingers_30fps.bvh");
+        Paths.Mocap("mixamo_fingers_30fps.bvh");
         var r = CliRunner.Run("fingers", "--json", "--profile", "vive-wand");
         Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
         using var doc = JsonDocument.Parse(r.Stdout);

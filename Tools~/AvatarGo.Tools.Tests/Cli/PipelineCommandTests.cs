@@ -56,7 +56,7 @@ public class PipelineCommandTests
         string json = session + ".json";
         try
         {
-            var s = CliRunner.Run("simulate", "--bvh", Paths.SharedMocap("mixamo_fingers_30fps.bvh"), "--out", session, "--seed", "5");
+            var s = CliRunner.Run("simulate", "--bvh", Paths.Mocap("mixamo_fingers_30fps.bvh"), "--out", session, "--seed", "5");
             Assert.That(s.ExitCode, Is.EqualTo(0), s.Stderr);
             var e = CliRunner.Run("evaluate", session, "--mode", "fixed", "--json", json);
             Assert.That(e.ExitCode, Is.EqualTo(0), e.Stderr);

@@ -37,6 +37,9 @@ public sealed class FakePackage : IDisposable
         Write("Tools~/AvatarGo.Core/bin/Release/x.dll", "");
         Write("Runtime/AvatarGo.asmdef", Asmdef("AvatarGo", "\"AvatarGo.Core\""));
         Write("Runtime/Core/AvatarGo.Core.asmdef", Asmdef("AvatarGo.Core", "", noEngineReferences: true));
+        Write("Runtime/Core/AssemblyInfo.cs", "[assembly: System.Runtime.CompilerServices.InternalsVisibleTo(\"AvatarGo.Core.Tests\")]\n");
+        Write("Runtime/Simulation/AvatarGo.Simulation.asmdef", Asmdef("AvatarGo.Simulation", "\"AvatarGo.Core\"", noEngineReferences: true,
+            constraints: "\"UNITY_EDITOR || UNITY_INCLUDE_TESTS\"", autoReferenced: false));
         Write("Runtime/Core/Math/Thing.cs", "namespace AvatarGo.Core\n{\n    /// <summary>x</summary>\n    public struct Thing { }\n}\n");
         Write("Runtime/Behaviours/Driver.cs", "using UnityEngine;\n\nnamespace AvatarGo;\n\npublic sealed class Driver : MonoBehaviour\n{\n    public enum Mode { A, B }\n}\n");
         Write("Editor/AvatarGo.Editor.asmdef", Asmdef("AvatarGo.Editor", "\"AvatarGo\"", platforms: "\"Editor\""));
@@ -94,14 +97,16 @@ public sealed class FakePackage : IDisposable
     }
 
     /// <summary>An asmdef's JSON.</summary>
-    public static string Asmdef(string name, string references, string platforms = "", bool test = false, bool noEngineReferences = false) =>
+    public static string Asmdef(string name, string references, string platforms = "", bool test = false, bool noEngineReferences = false,
+        string constraints = null, bool autoReferenced = true) =>
         "{\n" +
         $"    \"name\": \"{name}\",\n" +
         $"    \"references\": [{references}],\n" +
         $"    \"includePlatforms\": [{platforms}],\n" +
         $"    \"overrideReferences\": {(test ? "true" : "false")},\n" +
         $"    \"precompiledReferences\": [{(test ? "\"nunit.framework.dll\"" : "")}],\n" +
-        $"    \"defineConstraints\": [{(test ? "\"UNITY_INCLUDE_TESTS\"" : "")}],\n" +
+        $"    \"defineConstraints\": [{constraints ?? (test ? "\"UNITY_INCLUDE_TESTS\"" : "")}],\n" +
+        $"    \"autoReferenced\": {(autoReferenced ? "true" : "false")},\n" +
         $"    \"noEngineReferences\": {(noEngineReferences ? "true" : "false")}\n" +
         "}\n";
 

@@ -52,6 +52,12 @@ public class PackageLintTests
     public void OnePublicTypePerFileNamedAfterIt() => AssertClean(_linter.CheckOnePublicTypePerFile());
 
     [Test]
+    public void SimulationStaysOutOfTheRuntime() => AssertClean(_linter.CheckAssemblyBoundaries());
+
+    [Test]
+    public void InternalsVisibleToIsDeclaredInSource() => AssertClean(_linter.CheckInternalsVisibleToInSource());
+
+    [Test]
     public void RequiredFilesExist() => AssertClean(_linter.CheckRequiredFiles());
 
     [Test]

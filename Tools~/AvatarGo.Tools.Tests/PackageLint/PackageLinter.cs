@@ -505,13 +505,13 @@ public sealed class PackageLinter
     // ---------------------------------------------------------------------------------------------
     // C# sources
 
-    /// <summary>No .cs under Runtime/Core has a `using UnityEngine`/`using UnityEditor` directive.</summary>
+    /// <summary>No .cs under Runtime/Core or Runtime/Simulation (the engine-free assemblies) has a `using UnityEngine`/`using UnityEditor` directive.</summary>
     public List<string> CheckCoreIsEngineFree()
     {
         var usingEngine = new Regex(@"^\s*(?:global\s+)?using\s+(?:static\s+)?(?:\w+\s*=\s*)?(?<ns>UnityEngine|UnityEditor)\b",
             RegexOptions.Multiline | RegexOptions.CultureInvariant);
         var problems = new List<string>();
-        foreach (string f in Files.Where(f => f.StartsWith("Runtime/Core/", StringComparison.Ordinal) && f.EndsWith(".cs", StringComparison.Ordinal)))
+        foreach (string f in Files.Where(f => (f.StartsWith("Runtime/Core/", StringComparison.Ordinal) || f.StartsWith("Runtime/Simulation/", StringComparison.Ordinal)) && f.EndsWith(".cs", StringComparison.Ordinal)))
         {
             string text = StripCommentsAndStrings(File.ReadAllText(Path.Combine(Root, f)));
             foreach (Match m in usingEngine.Matches(text))
@@ -643,6 +643,88 @@ public sealed class PackageLinter
     }
 
     // ---------------------------------------------------------------------------------------------
+    // Assembly boundaries
+
+    /// <summary>The engine-free assembly of simulation, evaluation and test rigs, which players never ship.</summary>
+    public const string SimulationAssembly = "AvatarGo.Simulation";
+
+    /// <summary>
+    /// The simulation/evaluation assembly stays out of what ships: it is engine-free, not auto-referenced, compiled
+    /// only in the Editor or in builds that include tests (a define constraint naming UNITY_EDITOR and
+    /// UNITY_INCLUDE_TESTS), and no other assembly under Runtime/ references it, by name or by GUID.
+    /// </summary>
+    public List<string> CheckAssemblyBoundaries()
+    {
+        var problems = new List<string>();
+        var asmdefs = new List<(string Path, string Name, List<string> References)>();
+        string simulationGuid = null, simulationPath = null;
+        foreach (string path in Asmdefs())
+        {
+            using JsonDocument doc = TryParse(path);
+            if (doc == null || doc.RootElement.ValueKind != JsonValueKind.Object) continue; // CheckAsmdefs reports it
+            JsonElement json = doc.RootElement;
+            string name = GetString(json, "name");
+            asmdefs.Add((path, name, GetStrings(json, "references", path, problems)));
+            if (name != SimulationAssembly) continue;
+            simulationPath = path;
+            simulationGuid = ReadGuid(path + ".meta");
+            if (!(json.TryGetProperty("noEngineReferences", out JsonElement ner) && ner.ValueKind == JsonValueKind.True))
+                problems.Add($"{path}: {SimulationAssembly} must have \"noEngineReferences\": true");
+            if (!(json.TryGetProperty("autoReferenced", out JsonElement auto) && auto.ValueKind == JsonValueKind.False))
+                problems.Add($"{path}: {SimulationAssembly} must have \"autoReferenced\": false (user code references it on purpose)");
+            List<string> constraints = GetStrings(json, "defineConstraints", path, problems);
+            if (!constraints.Any(c => c.Contains("UNITY_EDITOR", StringComparison.Ordinal) && c.Contains("UNITY_INCLUDE_TESTS", StringComparison.Ordinal)))
+                problems.Add($"{path}: {SimulationAssembly} needs the define constraint \"UNITY_EDITOR || UNITY_INCLUDE_TESTS\" so players never ship it");
+        }
+        foreach (var (path, name, references) in asmdefs)
+        {
+            if (!path.StartsWith("Runtime/", StringComparison.Ordinal) || path == simulationPath) continue;
+            foreach (string reference in references)
+                if (reference == SimulationAssembly || (simulationGuid != null && reference == "GUID:" + simulationGuid))
+                    problems.Add($"{path}: runtime assembly {name} references {SimulationAssembly} (simulation and evaluation do not ship)");
+        }
+        return problems;
+    }
+
+    /// <summary>
+    /// Unity builds from asmdefs and sources, never from Tools~'s projects: an <c>InternalsVisibleTo</c> in a Tools~
+    /// project that compiles package sources would let tests pass here that Unity cannot compile. The core grants its
+    /// test assembly access in a source file under Runtime/Core instead.
+    /// </summary>
+    public List<string> CheckInternalsVisibleToInSource()
+    {
+        var problems = new List<string>();
+        string tools = Path.Combine(Root, "Tools~");
+        if (Directory.Exists(tools))
+            foreach (string project in Directory.GetFiles(tools, "*.csproj", SearchOption.AllDirectories))
+            {
+                string text = File.ReadAllText(project);
+                bool compilesPackage = Regex.IsMatch(text, @"<Compile\s+Include=""\$\(PackageRoot\)/(Runtime|Editor|Tests)/", RegexOptions.CultureInvariant);
+                if (compilesPackage && text.Contains("<InternalsVisibleTo", StringComparison.Ordinal))
+                    problems.Add($"{Path.GetRelativePath(Root, project).Replace('\\', '/')}: declares InternalsVisibleTo in MSBuild; Unity never sees it, declare it in a source file");
+            }
+        var grant = new Regex(@"\[\s*assembly\s*:\s*(?:System\.Runtime\.CompilerServices\.)?InternalsVisibleTo\s*\(\s*""AvatarGo\.Core\.Tests""", RegexOptions.CultureInvariant);
+        bool hasTests = Files.Contains("Tests/Core/AvatarGo.Core.Tests.asmdef");
+        bool granted = Files.Any(f => f.StartsWith("Runtime/Core/", StringComparison.Ordinal) && f.EndsWith(".cs", StringComparison.Ordinal)
+                                      && grant.IsMatch(File.ReadAllText(Path.Combine(Root, f))));
+        if (hasTests && !granted)
+            problems.Add("Runtime/Core: no source file declares [assembly: InternalsVisibleTo(\"AvatarGo.Core.Tests\")]");
+        return problems;
+    }
+
+    private JsonDocument TryParse(string relative)
+    {
+        try
+        {
+            return JsonDocument.Parse(File.ReadAllText(Path.Combine(Root, relative)));
+        }
+        catch (JsonException)
+        {
+            return null;
+        }
+    }
+
+    // ---------------------------------------------------------------------------------------------
     // Required files
 
     /// <summary>The files every release needs exist.</summary>
@@ -653,7 +735,8 @@ public sealed class PackageLinter
     public List<string> CheckAll() =>
         CheckMetas().Concat(CheckNoBuildArtifacts()).Concat(CheckAsmdefs()).Concat(CheckAsmdefCoverage())
             .Concat(CheckPackageJson()).Concat(CheckChangelog()).Concat(CheckCoreIsEngineFree())
-            .Concat(CheckOnePublicTypePerFile()).Concat(CheckRequiredFiles()).ToList();
+            .Concat(CheckOnePublicTypePerFile()).Concat(CheckRequiredFiles()).Concat(CheckAssemblyBoundaries())
+            .Concat(CheckInternalsVisibleToInSource()).ToList();
 
     // ---------------------------------------------------------------------------------------------
     // Helpers

@@ -187,6 +187,33 @@ public class PackageLinterSelfTests
     }
 
     [Test]
+    public void RuntimeReferencingTheSimulationAssemblyIsReported()
+    {
+        _pkg.Write("Runtime/AvatarGo.asmdef", FakePackage.Asmdef("AvatarGo", "\"AvatarGo.Core\", \"GUID:" + _pkg.GuidOf("Runtime/Simulation/AvatarGo.Simulation.asmdef.meta") + "\""));
+        _pkg.Write("Runtime/Core/AvatarGo.Core.asmdef", FakePackage.Asmdef("AvatarGo.Core", "\"AvatarGo.Simulation\"", noEngineReferences: true));
+        _pkg.Write("Runtime/Simulation/AvatarGo.Simulation.asmdef", FakePackage.Asmdef("AvatarGo.Simulation", "\"AvatarGo.Core\""));
+        List<string> problems = _pkg.Linter.CheckAssemblyBoundaries();
+        AssertReported(problems, "Runtime/AvatarGo.asmdef: runtime assembly AvatarGo references AvatarGo.Simulation",
+            "Runtime/Core/AvatarGo.Core.asmdef: runtime assembly AvatarGo.Core references AvatarGo.Simulation",
+            "must have \"noEngineReferences\": true", "must have \"autoReferenced\": false", "UNITY_EDITOR || UNITY_INCLUDE_TESTS");
+        Assert.That(problems, Has.Count.EqualTo(5), PackageLinter.Describe(problems));
+    }
+
+    [Test]
+    public void InternalsVisibleToOnlyInMsbuildIsReported()
+    {
+        _pkg.Delete("Runtime/Core/AssemblyInfo.cs");
+        _pkg.Delete("Runtime/Core/AssemblyInfo.cs.meta");
+        _pkg.Write("Tools~/AvatarGo.Core/AvatarGo.Core.csproj",
+            "<Project>\n  <ItemGroup><Compile Include=\"$(PackageRoot)/Runtime/Core/**/*.cs\" /></ItemGroup>\n" +
+            "  <ItemGroup><InternalsVisibleTo Include=\"AvatarGo.Core.Tests\" /></ItemGroup>\n</Project>\n");
+        List<string> problems = _pkg.Linter.CheckInternalsVisibleToInSource();
+        AssertReported(problems, "Tools~/AvatarGo.Core/AvatarGo.Core.csproj: declares InternalsVisibleTo in MSBuild",
+            "Runtime/Core: no source file declares");
+        Assert.That(problems, Has.Count.EqualTo(2), PackageLinter.Describe(problems));
+    }
+
+    [Test]
     public void SecondPublicTypeOrMisnamedFileIsReported()
     {
         _pkg.Write("Runtime/Core/Math/Thing.cs", "namespace AvatarGo.Core\n{\n    public struct Thing { }\n    public enum ThingKind { A }\n}\n");

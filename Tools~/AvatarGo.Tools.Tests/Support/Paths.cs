@@ -3,15 +3,16 @@ using NUnit.Framework;
 
 namespace AvatarGo.Tools.Tests;
 
-/// <summary>The package root and the shared data folder beside the repository.</summary>
+/// <summary>The package root and the mocap clips the package ships for its tests (Tests/Core/Data~).</summary>
 public static class Paths
 {
     public static string PackageRoot { get; } = Find();
 
-    public static string SharedMocap(string file)
+    /// <summary>A clip of Tests/Core/Data~ (mocapbank_30fps.bvh, mixamo_fingers_30fps.bvh, rigify_6channel_24fps_first240.bvh).</summary>
+    public static string Mocap(string file)
     {
-        string path = Path.GetFullPath(Path.Combine(PackageRoot, "..", "shared", "mocap", file));
-        if (!File.Exists(path)) Assert.Ignore($"shared clip {file} is not available");
+        string path = Path.Combine(PackageRoot, "Tests", "Core", "Data~", file);
+        if (!File.Exists(path)) Assert.Fail($"Tests/Core/Data~/{file} is missing from the package");
         return path;
     }
 

@@ -1,6 +1,7 @@
 using System.Collections.Generic;
+using AvatarGo.Core;
 
-namespace AvatarGo.Core
+namespace AvatarGo.Simulation
 {
     /// <summary>How closely the avatar followed the wearer over a session (<see cref="SessionEvaluator"/>).</summary>
     public sealed class EvaluationReport

@@ -1,7 +1,8 @@
 using System;
 using System.Numerics;
+using AvatarGo.Core;
 
-namespace AvatarGo.Core
+namespace AvatarGo.Simulation
 {
     /// <summary>
     /// Produces the six device poses a wearer would have (HMD, two controllers, pelvis and foot trackers)

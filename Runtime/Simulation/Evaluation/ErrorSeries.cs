@@ -1,7 +1,8 @@
 using System;
 using System.Collections.Generic;
+using AvatarGo.Core;
 
-namespace AvatarGo.Core
+namespace AvatarGo.Simulation
 {
     /// <summary>
     /// Collects one error measure (millimetres, degrees) over many frames and summarises it:

@@ -1,7 +1,8 @@
 using System;
 using System.Numerics;
+using AvatarGo.Core;
 
-namespace AvatarGo.Core
+namespace AvatarGo.Simulation
 {
     /// <summary>
     /// Replays a synthetic session through calibration, the body solver and the IK, and compares the avatar with

@@ -1,8 +1,9 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AvatarGo.Core;
 
-namespace AvatarGo.Core
+namespace AvatarGo.Simulation
 {
     /// <summary>
     /// Turns mocap into a complete synthetic session: the wearer stands in T-pose and presses the trigger, the

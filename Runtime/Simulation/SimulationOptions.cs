@@ -1,6 +1,7 @@
 using System.Numerics;
+using AvatarGo.Core;
 
-namespace AvatarGo.Core
+namespace AvatarGo.Simulation
 {
     /// <summary>Settings of <see cref="SessionSimulator"/>.</summary>
     public sealed class SimulationOptions

@@ -1,7 +1,8 @@
 using System;
 using System.Collections.Generic;
+using AvatarGo.Core;
 
-namespace AvatarGo.Core
+namespace AvatarGo.Simulation
 {
     /// <summary>Makes avatars with other proportions than a given skeleton (longer legs, shorter arms), for tests and evaluation.</summary>
     public static class Proportions

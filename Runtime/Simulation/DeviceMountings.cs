@@ -1,7 +1,8 @@
 using System;
 using System.Numerics;
+using AvatarGo.Core;
 
-namespace AvatarGo.Core
+namespace AvatarGo.Simulation
 {
     /// <summary>
     /// Where each of the six devices sits on the body: per role, the device pose relative to its joint,

@@ -1,8 +1,9 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AvatarGo.Core;
 
-namespace AvatarGo.Core
+namespace AvatarGo.Simulation
 {
     /// <summary>
     /// A humanoid rig of two forearms and hands built in code, for tests, tools and previews when no avatar's hand is
