@@ -41,9 +41,10 @@ namespace AvatarGo.Core
 
         private readonly HandModel _hand;
         private readonly ControllerProfile _profile;
-        private readonly float[] _solved = new float[HandModel.ParameterCount];
-        private readonly float[] _start = new float[HandModel.ParameterCount];
-        private readonly float[] _t = new float[HandModel.ParameterCount];
+        private readonly float[] _solved = new float[FingerParameters.Count];
+        private readonly float[] _start = new float[FingerParameters.Count];
+        private readonly FingerParameters _parameters = new FingerParameters();
+        private readonly float[] _t;   // _parameters' storage
         private readonly Vector3[] _points = new Vector3[3];
         private readonly Vector3[] _pointGradients = new Vector3[3];
         private RigidPose _handInController;
@@ -56,6 +57,7 @@ namespace AvatarGo.Core
         {
             _hand = hand ?? throw new ArgumentNullException(nameof(hand));
             _profile = profile ?? throw new ArgumentNullException(nameof(profile));
+            _t = _parameters.Values;
             _thumbGoal = Lifted(profile.ThumbRest);
             _indexGoal = Lifted(profile.Trigger);
             // The start of every frame's descent: the grip solved once with the controller exactly where this hand
@@ -67,16 +69,19 @@ namespace AvatarGo.Core
             for (int f = 0; f < 5; f++)
                 if (_hand.HasFinger[f]) GridStart(f);
             Solve(RigidPose.Identity, held, GripMode.Hold);
-            Array.Copy(_solved, _start, HandModel.ParameterCount);
-            Array.Clear(_solved, 0, HandModel.ParameterCount);
-            Array.Clear(_t, 0, HandModel.ParameterCount);
+            Array.Copy(_solved, _start, FingerParameters.Count);
+            Array.Clear(_solved, 0, FingerParameters.Count);
+            Array.Clear(_t, 0, FingerParameters.Count);
         }
 
         /// <summary>The hand.</summary>
         public HandModel Hand => _hand;
 
-        /// <summary>The <see cref="HandModel.ParameterCount"/> joint parameters after the last <see cref="Solve"/> (finger-major: thumb 0–2, index 3–5, …, then the thumb's spread).</summary>
-        public ReadOnlySpan<float> T => _t;
+        /// <summary>The hand's joint parameters after the last <see cref="Solve"/> (what <see cref="HandModel.Apply"/> poses the fingers from).</summary>
+        public FingerParameters Parameters => _parameters;
+
+        /// <summary>The controller profile the fingers close on.</summary>
+        public ControllerProfile Profile => _profile;
 
         /// <summary>Iterations used by the last solve, summed over the fingers.</summary>
         public int LastIterations { get; private set; }
@@ -97,8 +102,8 @@ namespace AvatarGo.Core
             OutOfReach = _profile.Shape.Distance(palm) > ReachDistance;
             if (mode == GripMode.Open || OutOfReach)
             {
-                Array.Clear(_solved, 0, HandModel.ParameterCount);
-                Array.Clear(_t, 0, HandModel.ParameterCount);
+                Array.Clear(_solved, 0, FingerParameters.Count);
+                Array.Clear(_t, 0, FingerParameters.Count);
                 return;
             }
             for (int f = 0; f < 5; f++)
@@ -119,43 +124,40 @@ namespace AvatarGo.Core
                 float blend = mode != GripMode.InputDriven ? 1f : f == 1 ? v : g;
                 for (int k = 0; k < 3; k++) _t[f * 3 + k] = _solved[f * 3 + k] * blend;
             }
-            _t[HandModel.ThumbSpreadIndex] = _solved[HandModel.ThumbSpreadIndex] * (mode != GripMode.InputDriven ? 1f : g);
+            _t[FingerParameters.ThumbSpreadIndex] = _solved[FingerParameters.ThumbSpreadIndex] * (mode != GripMode.InputDriven ? 1f : g);
         }
 
         /// <summary>
-        /// The signed distance (m) from the controller's surface to the skin at a finger point after the last solve:
-        /// point 0 intermediate joint, 1 distal joint, 2 fingertip. Negative: penetration. NaN for a finger the rig does
-        /// not have (check <see cref="HandModel.Has"/>).
+        /// The signed distance (m) from the controller's surface to the skin at a finger point after the last solve.
+        /// Negative: penetration. NaN for a finger the rig does not have (check <see cref="HandModel.Has"/>).
         /// </summary>
-        /// <exception cref="ArgumentOutOfRangeException">The finger is not 0–4 or the point not 0–2.</exception>
-        public float SurfaceGap(int finger, int point) => _profile.Shape.Distance(PointInController(finger, point)) - _hand.FingerRadius;
+        public float SurfaceGap(Finger finger, FingerPoint point) => _profile.Shape.Distance(PointInController(finger, point)) - _hand.FingerRadius;
 
         /// <summary>
-        /// How far (m) the fingertip of the thumb (<paramref name="finger"/> 0) or the index (1) is, after the last solve,
-        /// from resting on the thumb rest or the trigger: the distance from the fingertip's centre to its goal, the
-        /// profile's point lifted one finger radius off the surface (where the fingertip's centre is when its pad
-        /// touches the point). NaN when the rig has no such finger.
+        /// How far (m) the fingertip of the thumb or the index is, after the last solve, from resting on the thumb rest or
+        /// the trigger: the distance from the fingertip's centre to its goal, the profile's point lifted one finger radius
+        /// off the surface (where the fingertip's centre is when its pad touches the point). NaN when the rig has no such finger.
         /// </summary>
         /// <exception cref="ArgumentOutOfRangeException">Not the thumb or the index.</exception>
-        public float GoalDistance(int finger)
+        public float GoalDistance(Finger finger)
         {
-            if (finger != 0 && finger != 1) throw new ArgumentOutOfRangeException(nameof(finger), finger, "Only the thumb (0) and the index (1) have goals.");
-            return Vector3.Distance(PointInController(finger, 2), finger == 0 ? _thumbGoal : _indexGoal);
+            if (finger != Finger.Thumb && finger != Finger.Index) throw new ArgumentOutOfRangeException(nameof(finger), finger, "Only the thumb and the index have goals.");
+            return Vector3.Distance(PointInController(finger, FingerPoint.Tip), finger == Finger.Thumb ? _thumbGoal : _indexGoal);
         }
 
         /// <summary>
         /// A finger point after the last solve, in the controller's frame (the frame of the profile's trigger and
-        /// thumb rest): point 0 intermediate joint, 1 distal joint, 2 fingertip. NaN for a finger the rig does not have.
+        /// thumb rest). NaN for a finger the rig does not have.
         /// </summary>
-        /// <exception cref="ArgumentOutOfRangeException">The finger is not 0–4 or the point not 0–2.</exception>
-        public Vector3 PointInController(int finger, int point)
+        public Vector3 PointInController(Finger finger, FingerPoint point)
         {
-            if ((uint)finger > 4) throw new ArgumentOutOfRangeException(nameof(finger), finger, "Fingers are 0 (thumb) to 4 (little).");
-            if ((uint)point > 2) throw new ArgumentOutOfRangeException(nameof(point), point, "Points are 0 (intermediate joint), 1 (distal joint) and 2 (fingertip).");
-            if (!_hand.HasFinger[finger]) return new Vector3(float.NaN);
-            int o = finger * 3;
-            Chain(finger, new Vector4(_t[o], _t[o + 1], _t[o + 2], finger == 0 ? _t[HandModel.ThumbSpreadIndex] : 0f), out _, out RigidPose w1, out RigidPose w2);
-            return point == 0 ? w1.Position : point == 1 ? w2.Position : w2.TransformPoint(_hand.TipLocal[finger]);
+            if ((uint)finger > 4) throw new ArgumentOutOfRangeException(nameof(finger), finger, "Not a finger.");
+            if ((uint)point > 2) throw new ArgumentOutOfRangeException(nameof(point), point, "Not a finger point.");
+            int f = (int)finger;
+            if (!_hand.HasFinger[f]) return new Vector3(float.NaN);
+            int o = f * 3;
+            Chain(f, new Vector4(_t[o], _t[o + 1], _t[o + 2], f == 0 ? _t[FingerParameters.ThumbSpreadIndex] : 0f), out _, out RigidPose w1, out RigidPose w2);
+            return point == FingerPoint.IntermediateJoint ? w1.Position : point == FingerPoint.DistalJoint ? w2.Position : w2.TransformPoint(_hand.TipLocal[f]);
         }
 
         // Sets finger f's start to the lowest-cost point of a grid over its parameters (7 values each: 343 points
@@ -177,7 +179,7 @@ namespace AvatarGo.Core
                             if (cost < best) { best = cost; bestT = t; }
                         }
             _start[f * 3] = bestT.X; _start[f * 3 + 1] = bestT.Y; _start[f * 3 + 2] = bestT.Z;
-            if (thumb) _start[HandModel.ThumbSpreadIndex] = bestT.W;
+            if (thumb) _start[FingerParameters.ThumbSpreadIndex] = bestT.W;
         }
 
         // What stays fixed through a frame's descent: the hand in the controller frame, each finger's base, and the
@@ -197,7 +199,7 @@ namespace AvatarGo.Core
             // long finger already wrapped past a thin handle) a warm start settles wherever it came from, which made
             // the grip depend on the frame rate by up to 0.035 in t. This way the grip is a function of this frame's
             // controller pose alone. Parameters: x, y, z the three joints; w the thumb's spread (0 for a finger).
-            var t = new Vector4(_start[o], _start[o + 1], _start[o + 2], thumb ? _start[HandModel.ThumbSpreadIndex] : 0f);
+            var t = new Vector4(_start[o], _start[o + 1], _start[o + 2], thumb ? _start[FingerParameters.ThumbSpreadIndex] : 0f);
             float cost = Cost(f, t, out Vector4 grad);
             int iterations = 0;
             float lastStep = float.MaxValue;
@@ -226,7 +228,7 @@ namespace AvatarGo.Core
                 if (moved < 2e-3f) { iterations++; break; }
             }
             _solved[o] = t.X; _solved[o + 1] = t.Y; _solved[o + 2] = t.Z;
-            if (thumb) _solved[HandModel.ThumbSpreadIndex] = t.W;
+            if (thumb) _solved[FingerParameters.ThumbSpreadIndex] = t.W;
             return iterations;
         }
 

@@ -11,17 +11,11 @@ namespace AvatarGo.Core
     /// finger's base (the thumb's own flexion, which curls it across the palm); and the thumb's first joint has two
     /// parameters, like Unity's humanoid muscles (Thumb 1 Stretched and Thumb Spread): it turns toward the palm normal
     /// and, separately, lifts the thumb radially (toward the thumb side, over the top of a controller).
-    /// Joint <c>j</c> of finger <c>f</c> has a parameter <c>t</c> in [0, 1] blending its open rotation to its closed one
-    /// (the paper's <c>t_f^j</c>), stored at <c>f * 3 + j</c>; the thumb's spread is parameter <see cref="ThumbSpreadIndex"/>.
+    /// Every joint has a parameter <c>t</c> in [0, 1] blending its open rotation to its closed one (the paper's
+    /// <c>t_f^j</c>), and the thumb has its spread too: <see cref="FingerParameters"/>.
     /// </summary>
     public sealed class HandModel
     {
-        /// <summary>The number of joint parameters of a hand: five fingers of three joints, plus the thumb's spread.</summary>
-        public const int ParameterCount = 16;
-
-        /// <summary>The index of the thumb's second parameter at its first joint (radial spread), after the 15 joint parameters.</summary>
-        public const int ThumbSpreadIndex = 15;
-
         /// <summary>How far the thumb's first joint spreads (lifts radially) at a spread parameter of 1, in degrees.</summary>
         public const float ThumbSpreadDegrees = 60f;
 
@@ -29,11 +23,8 @@ namespace AvatarGo.Core
         private static readonly float[] FingerClosing = { 80f, 100f, 70f };
         private static readonly float[] ThumbClosing = { 40f, 50f, 70f };
 
-        /// <summary>
-        /// How far joint <paramref name="joint"/> (0 proximal, 1 intermediate, 2 distal) of finger <paramref name="finger"/>
-        /// (0 thumb … 4 little) closes at t = 1, in degrees: fingers 80, 100, 70; thumb 40, 50, 70.
-        /// </summary>
-        public static float ClosingDegrees(int finger, int joint) => (finger == 0 ? ThumbClosing : FingerClosing)[joint];
+        /// <summary>How far a finger joint closes at t = 1, in degrees: fingers 80, 100, 70; thumb 40, 50, 70 (proximal to distal).</summary>
+        public static float ClosingDegrees(Finger finger, Phalanx joint) => (finger == Finger.Thumb ? ThumbClosing : FingerClosing)[(int)joint];
 
         /// <summary>
         /// Where the handle crosses the palm, as a fraction of the way from the wrist to the middle knuckle (0.8: at the
@@ -50,25 +41,26 @@ namespace AvatarGo.Core
         internal Vector3 ThumbSpreadAxisLocal;   // in the thumb's first joint's rest frame
         internal float ThumbSpreadRadians;
 
-        /// <summary>Builds the model of the left or right hand of <paramref name="map"/>'s rig from its rest pose.</summary>
-        /// <exception cref="ArgumentException">The rig has no hand bone on that side, no index, middle or little finger base, or
-        /// no complete index or middle finger.</exception>
-        public HandModel(HumanoidMap map, bool left)
+        /// <summary>Builds the model of one hand of <paramref name="map"/>'s rig from its rest pose.</summary>
+        /// <exception cref="ArgumentException">The hand cannot be modelled (<see cref="CanModel"/> says why).</exception>
+        public HandModel(HumanoidMap map, BodySide side)
         {
             if (map == null) throw new ArgumentNullException(nameof(map));
+            if (!CanModel(map, side, out string reason)) throw new ArgumentException(reason, nameof(map));
             Map = map;
-            IsLeft = left;
+            Side = side;
+            bool left = side == BodySide.Left;
             Skeleton s = map.Skeleton;
-            HandJoint = map[left ? HumanoidBone.LeftHand : HumanoidBone.RightHand];
-            if (HandJoint < 0) throw new ArgumentException("The rig has no hand bone on that side.", nameof(map));
+            HandJoint = map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)];
             var rest = new RigidPose[s.JointCount];
             var world = new RigidPose[s.JointCount];
             s.GetRestLocal(rest);
             s.ComputeWorld(rest, world);
             RigidPose hand = world[HandJoint];
 
-            int index = map[HumanoidBones.Finger(left, 1, 0)], little = map[HumanoidBones.Finger(left, 4, 0)], middle = map[HumanoidBones.Finger(left, 2, 0)];
-            if (index < 0 || little < 0 || middle < 0) throw new ArgumentException("The hand needs index, middle and little fingers.", nameof(map));
+            int index = map[HumanoidBones.Finger(side, Finger.Index, Phalanx.Proximal)];
+            int middle = map[HumanoidBones.Finger(side, Finger.Middle, Phalanx.Proximal)];
+            int little = map[HumanoidBones.Finger(side, Finger.Little, Phalanx.Proximal)];
             Vector3 along = Vector3.Normalize(world[middle].Position - hand.Position);
             Vector3 across = Vector3.Normalize(world[index].Position - world[little].Position);
             // Palm normal from geometry: for a right hand, (finger direction × little-to-index) points out of the palm;
@@ -83,7 +75,9 @@ namespace AvatarGo.Core
 
             for (int f = 0; f < 5; f++)
             {
-                int j0 = map[HumanoidBones.Finger(left, f, 0)], j1 = map[HumanoidBones.Finger(left, f, 1)], j2 = map[HumanoidBones.Finger(left, f, 2)];
+                int j0 = map[HumanoidBones.Finger(side, (Finger)f, Phalanx.Proximal)];
+                int j1 = map[HumanoidBones.Finger(side, (Finger)f, Phalanx.Intermediate)];
+                int j2 = map[HumanoidBones.Finger(side, (Finger)f, Phalanx.Distal)];
                 if (j0 < 0 || j1 < 0 || j2 < 0) continue;
                 HasFinger[f] = true;
                 Joints[f, 0] = j0; Joints[f, 1] = j1; Joints[f, 2] = j2;
@@ -105,7 +99,7 @@ namespace AvatarGo.Core
                         jointAxis = Vectors.NormalizeOr(Vector3.Cross(direction, toLittle - direction * Vector3.Dot(toLittle, direction)), axis);
                     }
                     AxisLocal[f, k] = Vector3.Transform(jointAxis, Quaternion.Conjugate(world[joints[k]].Rotation));
-                    MaxRadians[f, k] = ClosingDegrees(f, k) * Rotations.Deg2Rad;
+                    MaxRadians[f, k] = ClosingDegrees((Finger)f, (Phalanx)k) * Rotations.Deg2Rad;
                 }
                 if (f == 0)
                 {
@@ -118,20 +112,38 @@ namespace AvatarGo.Core
                     ThumbSpreadRadians = ThumbSpreadDegrees * Rotations.Deg2Rad;
                 }
             }
-            if (!HasFinger[1] || !HasFinger[2]) throw new ArgumentException("The hand needs complete index and middle fingers.", nameof(map));
+        }
+
+        /// <summary>
+        /// True when the rig's hand on <paramref name="side"/> can be modelled: it has the hand bone, the bases of the index,
+        /// middle and little fingers (they give the palm's plane) and all three joints of the index and middle fingers.
+        /// Otherwise <paramref name="reason"/> says what is missing (the avatar then holds the controller without finger IK).
+        /// </summary>
+        public static bool CanModel(HumanoidMap map, BodySide side, out string reason)
+        {
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            reason = null;
+            if (!map.Has(HumanoidBones.OnSide(HumanoidBone.LeftHand, side))) reason = $"the rig has no {side} hand bone";
+            else if (!map.Has(HumanoidBones.Finger(side, Finger.Little, Phalanx.Proximal)))
+                reason = $"the {side} hand has no little finger (the index, middle and little fingers' bases give the palm)";
+            else
+                foreach (Finger f in new[] { Finger.Index, Finger.Middle })
+                    for (Phalanx k = Phalanx.Proximal; k <= Phalanx.Distal && reason == null; k++)
+                        if (!map.Has(HumanoidBones.Finger(side, f, k))) reason = $"the {side} hand lacks {HumanoidBones.Finger(side, f, k)}";
+            return reason == null;
         }
 
         /// <summary>The rig.</summary>
         public HumanoidMap Map { get; }
 
-        /// <summary>True for the left hand.</summary>
-        public bool IsLeft { get; }
+        /// <summary>Which hand.</summary>
+        public BodySide Side { get; }
 
         /// <summary>The hand (wrist) joint.</summary>
         public int HandJoint { get; }
 
-        /// <summary>Whether finger <paramref name="finger"/> (0 thumb … 4 little) has all three joints.</summary>
-        public bool Has(int finger) => HasFinger[finger];
+        /// <summary>Whether <paramref name="finger"/> has all three joints in the rig.</summary>
+        public bool Has(Finger finger) => (uint)finger <= 4 ? HasFinger[(int)finger] : throw new ArgumentOutOfRangeException(nameof(finger), finger, "Not a finger.");
 
         /// <summary>The radius of a finger (for contact): 8.5 mm for a hand 9.5 cm from wrist to middle knuckle, scaled.</summary>
         public float FingerRadius { get; }
@@ -171,14 +183,14 @@ namespace AvatarGo.Core
         public RigidPose WristInController(ControllerProfile profile) => ControllerInHand(profile).Inverse();
 
         /// <summary>
-        /// Sets the finger joints of <paramref name="pose"/> from the <see cref="ParameterCount"/> parameters
-        /// <paramref name="t"/> (finger-major, then the thumb's spread), each clamped to [0, 1].
+        /// Sets the finger joints' local rotations in <paramref name="pose"/> from <paramref name="t"/>, each parameter
+        /// clamped to [0, 1]; the world poses are not updated (call <see cref="SkeletonPose.UpdateWorld()"/>). Allocation-free.
         /// </summary>
-        /// <exception cref="ArgumentException">Fewer than <see cref="ParameterCount"/> parameters.</exception>
-        public void Apply(ReadOnlySpan<float> t, SkeletonPose pose)
+        public void Apply(FingerParameters t, SkeletonPose pose)
         {
-            if (t.Length < ParameterCount) throw new ArgumentException($"{ParameterCount} parameters (5 fingers × 3 joints, and the thumb's spread) are needed.", nameof(t));
+            if (t == null) throw new ArgumentNullException(nameof(t));
             if (pose == null) throw new ArgumentNullException(nameof(pose));
+            float[] v = t.Values;
             for (int f = 0; f < 5; f++)
             {
                 if (!HasFinger[f]) continue;
@@ -186,7 +198,8 @@ namespace AvatarGo.Core
                 {
                     int j = Joints[f, k];
                     RigidPose rest = pose.Skeleton.GetRestLocal(j);
-                    pose.Local[j] = new RigidPose(rest.Position, Quaternion.Normalize(rest.Rotation * Bend(f, k, t[f * 3 + k], f == 0 && k == 0 ? t[ThumbSpreadIndex] : 0f)));
+                    float spread = f == 0 && k == 0 ? v[FingerParameters.ThumbSpreadIndex] : 0f;
+                    pose.Local[j] = new RigidPose(rest.Position, Quaternion.Normalize(rest.Rotation * Bend(f, k, v[f * 3 + k], spread)));
                 }
             }
         }

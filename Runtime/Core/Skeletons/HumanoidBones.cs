@@ -35,12 +35,10 @@ namespace AvatarGo.Core
             bone >= HumanoidBone.LeftThumbProximal && bone <= HumanoidBone.RightLittleDistal;
 
         /// <summary>True for a bone of the left side of the body.</summary>
-        public static bool IsLeft(HumanoidBone bone) =>
-            bone.ToString().StartsWith("Left", StringComparison.Ordinal);
+        public static bool IsLeft(HumanoidBone bone) => IsValid(bone) && Sides[(int)bone] == SideOfLeft;
 
         /// <summary>True for a bone of the right side of the body.</summary>
-        public static bool IsRight(HumanoidBone bone) =>
-            bone.ToString().StartsWith("Right", StringComparison.Ordinal);
+        public static bool IsRight(HumanoidBone bone) => IsValid(bone) && Sides[(int)bone] == SideOfRight;
 
         /// <summary>
         /// The bone's parent in the humanoid hierarchy (for <see cref="HumanoidBone.Hips"/>, <see cref="HumanoidBone.LastBone"/>).
@@ -49,24 +47,56 @@ namespace AvatarGo.Core
         public static HumanoidBone Parent(HumanoidBone bone) => IsValid(bone) ? Parents[(int)bone] : HumanoidBone.LastBone;
 
         /// <summary>The same bone on the other side of the body; a centre bone is its own mirror.</summary>
-        public static HumanoidBone Mirror(HumanoidBone bone)
-        {
-            string name = bone.ToString();
-            if (name.StartsWith("Left", StringComparison.Ordinal))
-                return (HumanoidBone)Enum.Parse(typeof(HumanoidBone), "Right" + name.Substring(4));
-            if (name.StartsWith("Right", StringComparison.Ordinal))
-                return (HumanoidBone)Enum.Parse(typeof(HumanoidBone), "Left" + name.Substring(5));
-            return bone;
-        }
+        public static HumanoidBone Mirror(HumanoidBone bone) => IsValid(bone) ? Mirrors[(int)bone] : bone;
 
         /// <summary>
-        /// The finger bone for a hand side, finger index (0 thumb … 4 little) and phalanx (0 proximal … 2 distal).
+        /// The bone on <paramref name="side"/> that <paramref name="leftBone"/> names on the left, for example
+        /// <c>OnSide(HumanoidBone.LeftHand, BodySide.Right)</c> is <see cref="HumanoidBone.RightHand"/>.
         /// </summary>
-        public static HumanoidBone Finger(bool left, int finger, int phalanx)
+        /// <exception cref="ArgumentException"><paramref name="leftBone"/> is not a bone of the left side.</exception>
+        public static HumanoidBone OnSide(HumanoidBone leftBone, BodySide side)
         {
-            if ((uint)finger > 4 || (uint)phalanx > 2) throw new ArgumentOutOfRangeException(nameof(finger));
-            int first = left ? (int)HumanoidBone.LeftThumbProximal : (int)HumanoidBone.RightThumbProximal;
-            return (HumanoidBone)(first + finger * 3 + phalanx);
+            if (!IsLeft(leftBone)) throw new ArgumentException($"{leftBone} is not a bone of the left side.", nameof(leftBone));
+            return side == BodySide.Left ? leftBone : Mirrors[(int)leftBone];
+        }
+
+        /// <summary>The finger bone of one hand: <paramref name="finger"/>'s <paramref name="phalanx"/>.</summary>
+        public static HumanoidBone Finger(BodySide side, Finger finger, Phalanx phalanx)
+        {
+            if ((uint)finger > 4) throw new ArgumentOutOfRangeException(nameof(finger), finger, "Not a finger.");
+            if ((uint)phalanx > 2) throw new ArgumentOutOfRangeException(nameof(phalanx), phalanx, "Not a finger joint.");
+            int first = side == BodySide.Left ? (int)HumanoidBone.LeftThumbProximal : (int)HumanoidBone.RightThumbProximal;
+            return (HumanoidBone)(first + (int)finger * 3 + (int)phalanx);
+        }
+
+        private const byte SideOfCentre = 0, SideOfLeft = 1, SideOfRight = 2;
+        private static readonly byte[] Sides = BuildSides();
+        private static readonly HumanoidBone[] Mirrors = BuildMirrors();
+
+        // Sides and mirrors from the enum names once, so the per-frame lookups above are table reads.
+        private static byte[] BuildSides()
+        {
+            var sides = new byte[Count];
+            for (int b = 0; b < Count; b++)
+            {
+                string name = ((HumanoidBone)b).ToString();
+                sides[b] = name.StartsWith("Left", StringComparison.Ordinal) ? SideOfLeft
+                    : name.StartsWith("Right", StringComparison.Ordinal) ? SideOfRight : SideOfCentre;
+            }
+            return sides;
+        }
+
+        private static HumanoidBone[] BuildMirrors()
+        {
+            var mirrors = new HumanoidBone[Count];
+            for (int b = 0; b < Count; b++)
+            {
+                string name = ((HumanoidBone)b).ToString();
+                mirrors[b] = name.StartsWith("Left", StringComparison.Ordinal) ? (HumanoidBone)Enum.Parse(typeof(HumanoidBone), "Right" + name.Substring(4))
+                    : name.StartsWith("Right", StringComparison.Ordinal) ? (HumanoidBone)Enum.Parse(typeof(HumanoidBone), "Left" + name.Substring(5))
+                    : (HumanoidBone)b;
+            }
+            return mirrors;
         }
 
         private static HumanoidBone[] BuildParents()
@@ -97,15 +127,14 @@ namespace AvatarGo.Core
             p[(int)HumanoidBone.RightLowerArm] = HumanoidBone.RightUpperArm;
             p[(int)HumanoidBone.LeftHand] = HumanoidBone.LeftLowerArm;
             p[(int)HumanoidBone.RightHand] = HumanoidBone.RightLowerArm;
-            for (int side = 0; side < 2; side++)
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {
-                bool left = side == 0;
-                HumanoidBone hand = left ? HumanoidBone.LeftHand : HumanoidBone.RightHand;
-                for (int finger = 0; finger < 5; finger++)
+                HumanoidBone hand = side == BodySide.Left ? HumanoidBone.LeftHand : HumanoidBone.RightHand;
+                for (Finger finger = Core.Finger.Thumb; finger <= Core.Finger.Little; finger++)
                 {
-                    p[(int)Finger(left, finger, 0)] = hand;
-                    p[(int)Finger(left, finger, 1)] = Finger(left, finger, 0);
-                    p[(int)Finger(left, finger, 2)] = Finger(left, finger, 1);
+                    p[(int)Finger(side, finger, Phalanx.Proximal)] = hand;
+                    p[(int)Finger(side, finger, Phalanx.Intermediate)] = Finger(side, finger, Phalanx.Proximal);
+                    p[(int)Finger(side, finger, Phalanx.Distal)] = Finger(side, finger, Phalanx.Intermediate);
                 }
             }
             return p;

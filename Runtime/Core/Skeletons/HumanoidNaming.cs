@@ -108,7 +108,7 @@ namespace AvatarGo.Core
                         {
                             int joint = FindFinger(skeleton, cores, sides, side, parent, fingerNames[f], phalanx + 1);
                             if (joint < 0) break;
-                            Put(HumanoidBones.Finger(left, f, phalanx), joint);
+                            Put(HumanoidBones.Finger(left ? BodySide.Left : BodySide.Right, (Finger)f, (Phalanx)phalanx), joint);
                             parent = joint;
                         }
                     }

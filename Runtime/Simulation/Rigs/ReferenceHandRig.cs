@@ -109,7 +109,7 @@ namespace AvatarGo.Simulation
                     {
                         string name = prefix + FingerNames[f] + (k + 1);
                         parent = Add(name, parent, Frame(p, dir), false);
-                        bones.Add(new KeyValuePair<HumanoidBone, string>(HumanoidBones.Finger(left, f, k), name));
+                        bones.Add(new KeyValuePair<HumanoidBone, string>(HumanoidBones.Finger(left ? BodySide.Left : BodySide.Right, (Finger)f, (Phalanx)k), name));
                         p += Map(Directions[f] * (Lengths[f][k] * scale));
                     }
                     Add(prefix + FingerNames[f] + "_End", parent, new RigidPose(p, world[parent].Rotation), true);

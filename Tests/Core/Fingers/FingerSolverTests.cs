@@ -67,16 +67,17 @@ namespace AvatarGo.Core.Tests
             foreach (ControllerProfile profile in Profiles())
                 foreach (bool left in new[] { true, false })
                 {
-                    var ha = new HandModel(a, left);
-                    var hb = new HandModel(b, left);
+                    var ha = new HandModel(a, left ? BodySide.Left : BodySide.Right);
+                    var hb = new HandModel(b, left ? BodySide.Left : BodySide.Right);
                     var sa = new FingerSolver(ha, profile);
                     var sb = new FingerSolver(hb, profile);
                     var hand = new RigidPose(new Vector3(0.2f, 1.1f, 0.3f), Rotations.AngleAxis(40f, new Vector3(0.3f, 1, 0.2f)));
                     sa.Solve(hand, hand * ha.ControllerInHand(profile), GripMode.Hold);
                     sb.Solve(hand, hand * hb.ControllerInHand(profile), GripMode.Hold);
-                    for (int i = 0; i < HandModel.ParameterCount; i++)
-                        Assert.That(sb.T[i], Is.EqualTo(sa.T[i]).Within(0.01f), $"{profile.Name} {(left ? "left" : "right")} parameter {i}");
-                    Assert.That(sa.T[4], Is.GreaterThan(0.3f), "the index closes");
+                    float[] ta = sa.Parameters.ToArray(), tb = sb.Parameters.ToArray();
+                    for (int i = 0; i < FingerParameters.Count; i++)
+                        Assert.That(tb[i], Is.EqualTo(ta[i]).Within(0.01f), $"{profile.Name} {(left ? "left" : "right")} parameter {i}");
+                    Assert.That(sa.Parameters[Finger.Index, Phalanx.Intermediate], Is.GreaterThan(0.3f), "the index closes");
                 }
         }
 
@@ -86,20 +87,20 @@ namespace AvatarGo.Core.Tests
             HumanoidMap map = MixamoHand();
             foreach (ControllerProfile profile in Profiles())
             {
-                var hand = new HandModel(map, false);
+                var hand = new HandModel(map, BodySide.Right);
                 var solver = new FingerSolver(hand, profile);
                 RigidPose h = RigidPose.Identity;
                 solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Hold);
-                Assert.That(solver.T[4], Is.GreaterThan(0.3f));
+                Assert.That(solver.Parameters[Finger.Index, Phalanx.Intermediate], Is.GreaterThan(0.3f));
                 solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Open);
-                for (int i = 0; i < HandModel.ParameterCount; i++) Assert.That(solver.T[i], Is.EqualTo(0f));
+                Assert.That(solver.Parameters.ToArray(), Is.All.EqualTo(0f));
                 solver.Solve(h, h * hand.ControllerInHand(profile), GripMode.Hold);
                 var away = new RigidPose(new Vector3(0, 0, 0.5f), Quaternion.Identity) * (h * hand.ControllerInHand(profile));
                 for (int frame = 0; frame < 3; frame++)
                 {
                     solver.Solve(h, away, GripMode.Hold);
                     Assert.That(solver.OutOfReach, Is.True);
-                    for (int i = 0; i < HandModel.ParameterCount; i++) Assert.That(solver.T[i], Is.EqualTo(0f), "open, and staying open");
+                    Assert.That(solver.Parameters.ToArray(), Is.All.EqualTo(0f), "open, and staying open");
                 }
             }
         }
@@ -110,7 +111,7 @@ namespace AvatarGo.Core.Tests
             HumanoidMap map = MixamoHand();
             foreach (ControllerProfile profile in Profiles())
             {
-                var hand = new HandModel(map, true);
+                var hand = new HandModel(map, BodySide.Left);
                 RigidPose inHand = hand.ControllerInHand(profile);
                 var final = new float[3][];
                 int[] rates = { 72, 90, 144 };
@@ -124,9 +125,9 @@ namespace AvatarGo.Core.Tests
                         var wobble = new RigidPose(new Vector3(0.002f * MathF.Sin(5 * t), 0.002f * MathF.Cos(3 * t), 0), Rotations.AngleAxis(3f * MathF.Sin(4 * t), Vector3.UnitY));
                         solver.Solve(RigidPose.Identity, inHand * wobble, GripMode.Hold);
                     }
-                    final[r] = solver.T.ToArray();
+                    final[r] = solver.Parameters.ToArray();
                 }
-                for (int i = 0; i < HandModel.ParameterCount; i++)
+                for (int i = 0; i < FingerParameters.Count; i++)
                 {
                     Assert.That(Math.Abs(final[0][i] - final[2][i]), Is.LessThanOrEqualTo(0.02f), $"{profile.Name} parameter {i}, 72 vs 144 Hz");
                     Assert.That(Math.Abs(final[1][i] - final[2][i]), Is.LessThanOrEqualTo(0.02f), $"{profile.Name} parameter {i}, 90 vs 144 Hz");
@@ -137,36 +138,36 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void InvalidPosesKeepTheLastGrip()
         {
-            var hand = new HandModel(MixamoHand(), false);
+            var hand = new HandModel(MixamoHand(), BodySide.Right);
             foreach (ControllerProfile profile in Profiles())
             {
                 var solver = new FingerSolver(hand, profile);
                 solver.Solve(RigidPose.Identity, hand.ControllerInHand(profile), GripMode.Hold);
-                float index = solver.T[4];
+                float index = solver.Parameters[Finger.Index, Phalanx.Intermediate];
                 solver.Solve(new RigidPose(new Vector3(float.NaN, 0, 0), Quaternion.Identity), hand.ControllerInHand(profile), GripMode.Hold);
-                Assert.That(solver.T[4], Is.EqualTo(index));
-                Assert.That(float.IsNaN(solver.T[4]), Is.False);
+                Assert.That(solver.Parameters[Finger.Index, Phalanx.Intermediate], Is.EqualTo(index));
+                Assert.That(float.IsNaN(solver.Parameters[Finger.Index, Phalanx.Intermediate]), Is.False);
             }
         }
 
         [Test]
         public void PointingAndInputDrivenGrips()
         {
-            var hand = new HandModel(MixamoHand(), false);
+            var hand = new HandModel(MixamoHand(), BodySide.Right);
             foreach (ControllerProfile profile in Profiles())
             {
                 var solver = new FingerSolver(hand, profile);
                 RigidPose c = hand.ControllerInHand(profile);
                 solver.Solve(RigidPose.Identity, c, GripMode.Hold);
-                float[] hold = solver.T.ToArray();
+                float[] hold = solver.Parameters.ToArray();
                 solver.Solve(RigidPose.Identity, c, GripMode.Point);
-                Assert.That(solver.T[3] + solver.T[4] + solver.T[5], Is.EqualTo(0f), profile.Name + ": index extended");
-                Assert.That(solver.T[7], Is.EqualTo(hold[7]).Within(1e-6f), profile.Name + ": middle still holds");
+                Assert.That(solver.Parameters[Finger.Index, Phalanx.Proximal] + solver.Parameters[Finger.Index, Phalanx.Intermediate] + solver.Parameters[Finger.Index, Phalanx.Distal], Is.EqualTo(0f), profile.Name + ": index extended");
+                Assert.That(solver.Parameters[Finger.Middle, Phalanx.Intermediate], Is.EqualTo(hold[7]).Within(1e-6f), profile.Name + ": middle still holds");
                 solver.Solve(RigidPose.Identity, c, GripMode.InputDriven, trigger: 1f, grip: 0.5f);
-                Assert.That(solver.T[4], Is.EqualTo(hold[4]).Within(1e-6f), profile.Name + ": full trigger = index on the trigger");
-                Assert.That(solver.T[7], Is.EqualTo(0.5f * hold[7]).Within(1e-6f), profile.Name + ": half grip = half closed");
+                Assert.That(solver.Parameters[Finger.Index, Phalanx.Intermediate], Is.EqualTo(hold[4]).Within(1e-6f), profile.Name + ": full trigger = index on the trigger");
+                Assert.That(solver.Parameters[Finger.Middle, Phalanx.Intermediate], Is.EqualTo(0.5f * hold[7]).Within(1e-6f), profile.Name + ": half grip = half closed");
                 solver.Solve(RigidPose.Identity, c, GripMode.InputDriven, trigger: 0f, grip: 1f);
-                Assert.That(solver.T[4], Is.EqualTo(0f), profile.Name + ": released trigger = index pointing");
+                Assert.That(solver.Parameters[Finger.Index, Phalanx.Intermediate], Is.EqualTo(0f), profile.Name + ": released trigger = index pointing");
             }
         }
     }

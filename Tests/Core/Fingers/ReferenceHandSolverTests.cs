@@ -34,12 +34,13 @@ namespace AvatarGo.Core.Tests
                 foreach (bool left in new[] { true, false })
                 {
                     HumanoidMap map = ReferenceHandRig.Build(1f, axis, 7, Rotations.AngleAxis(70f, new Vector3(0.2f, 0.1f, 1f)));
-                    var model = new HandModel(map, left);
+                    var model = new HandModel(map, left ? BodySide.Left : BodySide.Right);
                     Skeleton s = map.Skeleton;
                     var pose = new SkeletonPose(s);
                     pose.ResetToRest();
-                    var t = new float[HandModel.ParameterCount];
-                    for (int i = 0; i < 15; i++) t[i] = 0.5f; // every joint half closed, the thumb not spread
+                    var t = new FingerParameters();
+                    for (Finger f = Finger.Thumb; f <= Finger.Little; f++)
+                        for (Phalanx k = Phalanx.Proximal; k <= Phalanx.Distal; k++) t[f, k] = 0.5f; // every joint half closed, the thumb not spread
                     model.Apply(t, pose);
                     var world = new RigidPose[s.JointCount];
                     s.ComputeWorld(pose.Local, world);
@@ -54,7 +55,7 @@ namespace AvatarGo.Core.Tests
                     Assert.That(Vector3.Dot(palm, expectedPalm), Is.GreaterThan(0.99f), $"palm normal, axis {axis}, {(left ? "left" : "right")}");
                     for (int f = 1; f < 5; f++)
                     {
-                        int tip = map[HumanoidBones.Finger(left, f, 2)] + 1; // the end site follows the distal joint
+                        int tip = map[HumanoidBones.Finger(left ? BodySide.Left : BodySide.Right, (Finger)f, Phalanx.Distal)] + 1; // the end site follows the distal joint
                         Vector3 moved = world[tip].Position - restWorld[tip].Position;
                         // Half-closed, every tip has moved toward the palm side by at least 1 cm (a 7-9 cm finger
                         // turned by 35-50° per joint moves its tip 3-6 cm).
@@ -62,15 +63,14 @@ namespace AvatarGo.Core.Tests
                     }
                     // The thumb flexes across the palm: its tip comes at least 1 cm nearer the little finger's base
                     // (a 9.8 cm thumb turned by 20°, 25° and 35°) and moves to the palm side.
-                    int thumbTip = map[HumanoidBones.Finger(left, 0, 2)] + 1;
-                    Vector3 littleBase = restWorld[map[HumanoidBones.Finger(left, 4, 0)]].Position;
+                    int thumbTip = map[HumanoidBones.Finger(left ? BodySide.Left : BodySide.Right, Finger.Thumb, Phalanx.Distal)] + 1;
+                    Vector3 littleBase = restWorld[map[HumanoidBones.Finger(left ? BodySide.Left : BodySide.Right, Finger.Little, Phalanx.Proximal)]].Position;
                     float nearer = Vector3.Distance(restWorld[thumbTip].Position, littleBase) - Vector3.Distance(world[thumbTip].Position, littleBase);
                     Assert.That(nearer, Is.GreaterThan(0.01f), $"thumb toward the little finger, axis {axis}, {(left ? "left" : "right")}");
                     Assert.That(Vector3.Dot(world[thumbTip].Position - restWorld[thumbTip].Position, palm), Is.GreaterThan(0f), $"thumb to the palm side, axis {axis}, {(left ? "left" : "right")}");
 
                     // Spreading alone lifts the thumb radially: away from the little finger, along little-to-index.
-                    var spreadOnly = new float[HandModel.ParameterCount];
-                    spreadOnly[HandModel.ThumbSpreadIndex] = 0.5f;
+                    var spreadOnly = new FingerParameters { ThumbSpread = 0.5f };
                     pose.ResetToRest();
                     model.Apply(spreadOnly, pose);
                     s.ComputeWorld(pose.Local, world);
@@ -79,7 +79,7 @@ namespace AvatarGo.Core.Tests
                     Assert.That(Vector3.Dot(lifted, across), Is.GreaterThan(0.01f), $"thumb spread, axis {axis}, {(left ? "left" : "right")}");
                     for (int f = 1; f < 5; f++)
                     {
-                        int tip = map[HumanoidBones.Finger(left, f, 2)] + 1;
+                        int tip = map[HumanoidBones.Finger(left ? BodySide.Left : BodySide.Right, (Finger)f, Phalanx.Distal)] + 1;
                         Assert.That(Vector3.Distance(world[tip].Position, restWorld[tip].Position), Is.LessThan(1e-5f), "spreading the thumb moves no finger");
                     }
                 }
@@ -95,14 +95,14 @@ namespace AvatarGo.Core.Tests
                     foreach (Vector3 axis in Axes)
                     {
                         HumanoidMap map = ReferenceHandRig.Build(1f, axis, 11, Rotations.AngleAxis(-90f, Vector3.UnitZ));
-                        var model = new HandModel(map, left);
+                        var model = new HandModel(map, left ? BodySide.Left : BodySide.Right);
                         var solver = new FingerSolver(model, profile);
                         var hand = new RigidPose(new Vector3(0.3f, 1.0f, 0.2f), Rotations.AngleAxis(25f, new Vector3(1, 1, 0)));
                         solver.Solve(hand, hand * model.ControllerInHand(profile), GripMode.Hold);
-                        float[] t = solver.T.ToArray();
+                        float[] t = solver.Parameters.ToArray();
                         if (reference == null) { reference = t; continue; }
                         // The rigs have the same geometry to float precision; 0.01 in t is under 1° at a joint.
-                        for (int i = 0; i < HandModel.ParameterCount; i++)
+                        for (int i = 0; i < FingerParameters.Count; i++)
                             Assert.That(t[i], Is.EqualTo(reference[i]).Within(0.01f), $"{profile.Name} {(left ? "left" : "right")} axis {axis} parameter {i}");
                     }
                     Assert.That(reference[4], Is.GreaterThan(0.2f), profile.Name + ": the index closes");
@@ -124,7 +124,7 @@ namespace AvatarGo.Core.Tests
             foreach (ControllerProfile profile in Profiles())
                 foreach (bool left in new[] { true, false })
                 {
-                    var model = new HandModel(map, left);
+                    var model = new HandModel(map, left ? BodySide.Left : BodySide.Right);
                     var solver = new FingerSolver(model, profile);
                     RigidPose inHand = model.ControllerInHand(profile);
                     float maxPenetration = 0f;
@@ -140,10 +140,10 @@ namespace AvatarGo.Core.Tests
                         solver.Solve(RigidPose.Identity, inHand * wobble, GripMode.Hold);
                         for (int f = 0; f < 5; f++)
                         {
-                            for (int point = 0; point < 3; point++) maxPenetration = Math.Max(maxPenetration, -solver.SurfaceGap(f, point));
-                            gaps[f].Add(Math.Abs(solver.SurfaceGap(f, 2)));
+                            for (int point = 0; point < 3; point++) maxPenetration = Math.Max(maxPenetration, -solver.SurfaceGap((Finger)f, (FingerPoint)point));
+                            gaps[f].Add(Math.Abs(solver.SurfaceGap((Finger)f, FingerPoint.Tip)));
                         }
-                        thumbToRest.Add(solver.GoalDistance(0));
+                        thumbToRest.Add(solver.GoalDistance(Finger.Thumb));
                     }
                     string what = $"{profile.Name} {(left ? "left" : "right")} scale {scale}";
                     // The issue's bounds: no point of a finger more than 1 mm into the surface; every fingertip, the
@@ -165,7 +165,7 @@ namespace AvatarGo.Core.Tests
             foreach (ControllerProfile profile in Profiles())
                 foreach (bool left in new[] { true, false })
                 {
-                    var model = new HandModel(map, left);
+                    var model = new HandModel(map, left ? BodySide.Left : BodySide.Right);
                     var solver = new FingerSolver(model, profile);
                     var hand = new RigidPose(new Vector3(0.1f, 1.2f, -0.3f), Rotations.AngleAxis(40f, new Vector3(0, 1, 1)));
                     solver.Solve(hand, hand * model.ControllerInHand(profile), GripMode.Hold); // sets the hand in the controller frame
@@ -204,30 +204,30 @@ namespace AvatarGo.Core.Tests
                 var t = new float[2][];
                 foreach (bool left in new[] { true, false })
                 {
-                    var model = new HandModel(map, left);
+                    var model = new HandModel(map, left ? BodySide.Left : BodySide.Right);
                     var solver = new FingerSolver(model, profile);
                     var hand = new RigidPose(new Vector3(0.2f, 1.1f, 0.4f), Rotations.AngleAxis(-35f, new Vector3(1, 0, 1)));
                     RigidPose controller = hand * model.ControllerInHand(profile);
                     solver.Solve(hand, controller, GripMode.Hold);
-                    t[left ? 0 : 1] = solver.T.ToArray();
+                    t[left ? 0 : 1] = solver.Parameters.ToArray();
                     // What the avatar shows (Apply, then forward kinematics) is what the solver measured.
                     var pose = new SkeletonPose(s);
                     pose.ResetToRest();
                     pose.Local[model.HandJoint] = hand.RelativeTo(s.GetParent(model.HandJoint) < 0 ? RigidPose.Identity : RestWorld(s)[s.GetParent(model.HandJoint)]);
-                    model.Apply(solver.T, pose);
+                    model.Apply(solver.Parameters, pose);
                     var world = new RigidPose[s.JointCount];
                     s.ComputeWorld(pose.Local, world);
                     for (int f = 0; f < 5; f++)
                         for (int k = 1; k < 3; k++)
                         {
-                            Vector3 shown = controller.InverseTransformPoint(world[map[HumanoidBones.Finger(left, f, k)]].Position);
-                            Assert.That(Vector3.Distance(shown, solver.PointInController(f, k - 1)), Is.LessThan(1e-5f), $"{profile.Name} {(left ? "left" : "right")} finger {f} joint {k}");
+                            Vector3 shown = controller.InverseTransformPoint(world[map[HumanoidBones.Finger(left ? BodySide.Left : BodySide.Right, (Finger)f, (Phalanx)k)]].Position);
+                            Assert.That(Vector3.Distance(shown, solver.PointInController((Finger)f, (FingerPoint)(k - 1))), Is.LessThan(1e-5f), $"{profile.Name} {(left ? "left" : "right")} finger {f} joint {k}");
                         }
-                    int tip = map[HumanoidBones.Finger(left, 0, 2)] + 1;
-                    Assert.That(Vector3.Distance(controller.InverseTransformPoint(world[tip].Position), solver.PointInController(0, 2)), Is.LessThan(1e-5f), profile.Name + ": thumb tip");
+                    int tip = map[HumanoidBones.Finger(left ? BodySide.Left : BodySide.Right, Finger.Thumb, Phalanx.Distal)] + 1;
+                    Assert.That(Vector3.Distance(controller.InverseTransformPoint(world[tip].Position), solver.PointInController(Finger.Thumb, FingerPoint.Tip)), Is.LessThan(1e-5f), profile.Name + ": thumb tip");
                 }
                 // The profiles are symmetric about their x = 0 plane and the hands are mirror images: same grip.
-                for (int i = 0; i < HandModel.ParameterCount; i++)
+                for (int i = 0; i < FingerParameters.Count; i++)
                     Assert.That(t[0][i], Is.EqualTo(t[1][i]).Within(0.005f), $"{profile.Name}: parameter {i}, left against right");
             }
         }
@@ -249,22 +249,22 @@ namespace AvatarGo.Core.Tests
             foreach (HumanoidBone b in Enum.GetValues(typeof(HumanoidBone)))
             {
                 bool thumb = false;
-                foreach (bool side in new[] { true, false })
-                    for (int k = 0; k < 3; k++) thumb |= b == HumanoidBones.Finger(side, 0, k);
+                foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+                    for (Phalanx k = Phalanx.Proximal; k <= Phalanx.Distal; k++) thumb |= b == HumanoidBones.Finger(side, Finger.Thumb, k);
                 if (!thumb && full.Has(b)) bones.Add(new KeyValuePair<HumanoidBone, string>(b, full.NameOf(b)));
             }
             var map = new HumanoidMap(full.Skeleton, bones);
             foreach (ControllerProfile profile in Profiles())
             {
-                var model = new HandModel(map, false);
-                Assert.That(model.Has(0), Is.False);
+                var model = new HandModel(map, BodySide.Right);
+                Assert.That(model.Has(Finger.Thumb), Is.False);
                 var solver = new FingerSolver(model, profile);
                 solver.Solve(RigidPose.Identity, model.ControllerInHand(profile), GripMode.Hold);
-                Assert.That(float.IsNaN(solver.PointInController(0, 2).X), Is.True, profile.Name + ": no thumb, no thumb point");
-                Assert.That(float.IsNaN(solver.GoalDistance(0)), Is.True, profile.Name + ": no thumb, no thumb distance");
-                Assert.That(solver.T[0] + solver.T[1] + solver.T[2] + solver.T[HandModel.ThumbSpreadIndex], Is.EqualTo(0f), profile.Name + ": the missing thumb stays at rest");
+                Assert.That(float.IsNaN(solver.PointInController(Finger.Thumb, FingerPoint.Tip).X), Is.True, profile.Name + ": no thumb, no thumb point");
+                Assert.That(float.IsNaN(solver.GoalDistance(Finger.Thumb)), Is.True, profile.Name + ": no thumb, no thumb distance");
+                Assert.That(solver.Parameters[Finger.Thumb, Phalanx.Proximal] + solver.Parameters[Finger.Thumb, Phalanx.Intermediate] + solver.Parameters[Finger.Thumb, Phalanx.Distal] + solver.Parameters.ThumbSpread, Is.EqualTo(0f), profile.Name + ": the missing thumb stays at rest");
                 for (int f = 1; f < 5; f++)
-                    Assert.That(Math.Abs(solver.SurfaceGap(f, 2)), Is.LessThanOrEqualTo(0.003f), $"{profile.Name}: fingertip {f} on the surface");
+                    Assert.That(Math.Abs(solver.SurfaceGap((Finger)f, FingerPoint.Tip)), Is.LessThanOrEqualTo(0.003f), $"{profile.Name}: fingertip {f} on the surface");
             }
         }
 
@@ -274,7 +274,7 @@ namespace AvatarGo.Core.Tests
             HumanoidMap map = ReferenceHandRig.Build(1f, -Vector3.UnitX, 3, Quaternion.Identity);
             foreach (ControllerProfile profile in Profiles())
             {
-                var model = new HandModel(map, false);
+                var model = new HandModel(map, BodySide.Right);
                 RigidPose inHand = model.ControllerInHand(profile);
                 int[] rates = { 72, 90, 144 };
                 var final = new float[rates.Length][];
@@ -287,7 +287,7 @@ namespace AvatarGo.Core.Tests
                         var wobble = new RigidPose(new Vector3(0.002f * MathF.Sin(5 * time), 0, 0.002f * MathF.Cos(4 * time)), Rotations.AngleAxis(4f * MathF.Sin(3 * time), Vector3.UnitX));
                         solver.Solve(RigidPose.Identity, inHand * wobble, GripMode.Hold);
                     }
-                    final[r] = solver.T.ToArray();
+                    final[r] = solver.Parameters.ToArray();
                     // Pull the controller out of the hand over 10 frames: the hand must end open and stay open.
                     float previousSum = float.MaxValue;
                     for (int i = 1; i <= 20; i++)
@@ -297,14 +297,14 @@ namespace AvatarGo.Core.Tests
                         if (i >= 10)
                         {
                             float sum = 0f;
-                            for (int k = 0; k < HandModel.ParameterCount; k++) sum += solver.T[k];
+                            foreach (float v in solver.Parameters.ToArray()) sum += v;
                             Assert.That(sum, Is.EqualTo(0f), $"{profile.Name}: open once out of reach (frame {i})");
                             Assert.That(sum, Is.LessThanOrEqualTo(previousSum));
                             previousSum = sum;
                         }
                     }
                 }
-                for (int i = 0; i < HandModel.ParameterCount; i++)
+                for (int i = 0; i < FingerParameters.Count; i++)
                 {
                     Assert.That(Math.Abs(final[0][i] - final[2][i]), Is.LessThanOrEqualTo(0.02f), $"{profile.Name} parameter {i}, 72 vs 144 Hz");
                     Assert.That(Math.Abs(final[1][i] - final[2][i]), Is.LessThanOrEqualTo(0.02f), $"{profile.Name} parameter {i}, 90 vs 144 Hz");
@@ -319,7 +319,7 @@ namespace AvatarGo.Core.Tests
             foreach (ControllerProfile profile in Profiles())
                 foreach (bool left in new[] { true, false })
                 {
-                    var model = new HandModel(map, left);
+                    var model = new HandModel(map, left ? BodySide.Left : BodySide.Right);
                     RigidPose controllerInHand = model.ControllerInHand(profile);
                     // The palm centre (on the skin) touches the handle: 2 mm of clearance, within 0.5 mm.
                     Vector3 palmInController = controllerInHand.InverseTransformPoint(model.PalmCentreInHand);

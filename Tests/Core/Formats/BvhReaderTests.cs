@@ -43,8 +43,8 @@ namespace AvatarGo.Core.Tests
             for (int f = 0; f < 5; f++)
             for (int p = 0; p < 3; p++)
             {
-                Assert.That(mixamo.Has(HumanoidBones.Finger(true, f, p)), Is.True, HumanoidBones.Finger(true, f, p).ToString());
-                Assert.That(mixamo.Has(HumanoidBones.Finger(false, f, p)), Is.True, HumanoidBones.Finger(false, f, p).ToString());
+                Assert.That(mixamo.Has(HumanoidBones.Finger(BodySide.Left, (Finger)f, (Phalanx)p)), Is.True, HumanoidBones.Finger(BodySide.Left, (Finger)f, (Phalanx)p).ToString());
+                Assert.That(mixamo.Has(HumanoidBones.Finger(BodySide.Right, (Finger)f, (Phalanx)p)), Is.True, HumanoidBones.Finger(BodySide.Right, (Finger)f, (Phalanx)p).ToString());
             }
             Assert.That(mixamo.NameOf(HumanoidBone.LeftShoulder), Is.EqualTo("mixamorig:LeftShoulder"));
             Assert.That(mixamo.NameOf(HumanoidBone.LeftUpperArm), Is.EqualTo("mixamorig:LeftArm"));

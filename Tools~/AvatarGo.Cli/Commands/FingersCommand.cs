@@ -80,7 +80,7 @@ public sealed class FingersCommand : ICommand
 
     private static Dictionary<string, object> Measure(HumanoidMap rig, bool left, ControllerProfile profile)
     {
-        var hand = new HandModel(rig, left);
+        var hand = new HandModel(rig, left ? BodySide.Left : BodySide.Right);
         RigidPose inHand = hand.ControllerInHand(profile);
         int[] rates = { 72, 90, 144 };
         var finals = new float[rates.Length][];
@@ -109,16 +109,16 @@ public sealed class FingersCommand : ICommand
                 iterations += solver.LastIterations;
                 for (int f = 0; f < 5; f++)
                 {
-                    if (!hand.Has(f)) continue;
-                    for (int p = 0; p < 3; p++) penetration = Math.Max(penetration, -solver.SurfaceGap(f, p));
-                    byFinger[f].Add(Math.Abs(solver.SurfaceGap(f, 2)) * 1000.0); // a tip inside the surface is off it too
-                    if (f > 0) gaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
-                    else thumbGaps.Add(solver.SurfaceGap(f, 2) * 1000.0);
+                    if (!hand.Has((Finger)f)) continue;
+                    for (int p = 0; p < 3; p++) penetration = Math.Max(penetration, -solver.SurfaceGap((Finger)f, (FingerPoint)p));
+                    byFinger[f].Add(Math.Abs(solver.SurfaceGap((Finger)f, FingerPoint.Tip)) * 1000.0); // a tip inside the surface is off it too
+                    if (f > 0) gaps.Add(solver.SurfaceGap((Finger)f, FingerPoint.Tip) * 1000.0);
+                    else thumbGaps.Add(solver.SurfaceGap((Finger)f, FingerPoint.Tip) * 1000.0);
                 }
-                if (hand.Has(0)) thumbToRest.Add(solver.GoalDistance(0) * 1000.0);
-                indexToTrigger.Add(solver.GoalDistance(1) * 1000.0);
+                if (hand.Has(Finger.Thumb)) thumbToRest.Add(solver.GoalDistance(Finger.Thumb) * 1000.0);
+                indexToTrigger.Add(solver.GoalDistance(Finger.Index) * 1000.0);
             }
-            finals[r] = solver.T.ToArray();
+            finals[r] = solver.Parameters.ToArray();
         }
         gaps.Sort();
         foreach (var list in byFinger) list.Sort();
@@ -126,7 +126,7 @@ public sealed class FingersCommand : ICommand
         thumbToRest.Sort();
         indexToTrigger.Sort();
         double maxDiff = 0;
-        for (int i = 0; i < HandModel.ParameterCount; i++)
+        for (int i = 0; i < FingerParameters.Count; i++)
             for (int r = 1; r < rates.Length; r++) maxDiff = Math.Max(maxDiff, Math.Abs(finals[r][i] - finals[0][i]));
         // Timing: the 90 Hz sequence replayed 7 times, keeping the fastest pass (the machine may be busy with
         // other work; the fastest pass is the solver's own cost).
