@@ -29,8 +29,7 @@ namespace AvatarGo.Simulation
             _clip = clip ?? throw new ArgumentNullException(nameof(clip));
             _options = options ?? new SimulationOptions();
             _map = map ?? HumanoidNaming.Detect(clip.Skeleton);
-            var missing = _map.MissingRequired();
-            if (missing.Count > 0) throw new ArgumentException($"The clip's skeleton lacks required bones: {string.Join(", ", missing)}.", nameof(clip));
+            _map.RequireComplete(nameof(clip));
         }
 
         /// <summary>The devices of the simulated session.</summary>

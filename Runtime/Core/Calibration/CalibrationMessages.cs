@@ -3,7 +3,18 @@ namespace AvatarGo.Core
     /// <summary>What to tell the wearer for each <see cref="CalibrationError"/>.</summary>
     public static class CalibrationMessages
     {
-        /// <summary>A short instruction for the wearer.</summary>
+        /// <summary>What the wearer is asked to do in <paramref name="state"/> when nothing went wrong.</summary>
+        public static string Instruction(CalibrationState state)
+        {
+            switch (state)
+            {
+                case CalibrationState.WaitingForTPose: return "Stand in a T-pose and press a trigger.";
+                case CalibrationState.WalkIn: return "Walk into the avatar, match its pose, and press a trigger again.";
+                default: return "Calibrated.";
+            }
+        }
+
+        /// <summary>A short instruction for the wearer after <paramref name="error"/>.</summary>
         public static string For(CalibrationError error)
         {
             switch (error)

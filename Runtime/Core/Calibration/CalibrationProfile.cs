@@ -13,26 +13,17 @@ namespace AvatarGo.Core
     /// </summary>
     public sealed class CalibrationProfile
     {
-        private const int RoleSlots = 7;
-        private readonly int[] _deviceIds = new int[RoleSlots];
-        private readonly string[] _serials = new string[RoleSlots];
-        private readonly RigidPose[] _deviceAtCalibration = new RigidPose[RoleSlots];
-        private readonly RigidPose[] _jointAtCalibration = new RigidPose[RoleSlots];
-        private readonly RigidPose[] _jointInDevice = new RigidPose[RoleSlots];
+        private readonly PerRole<int> _deviceIds = new PerRole<int>(-1);
+        private readonly PerRole<string> _serials = new PerRole<string>(string.Empty);
+        private readonly PerRole<RigidPose> _deviceAtCalibration = new PerRole<RigidPose>(RigidPose.Identity);
+        private readonly PerRole<RigidPose> _jointAtCalibration = new PerRole<RigidPose>(RigidPose.Identity);
+        private readonly PerRole<RigidPose> _jointInDevice = new PerRole<RigidPose>(RigidPose.Identity);
 
         /// <summary>The current format version of persisted profiles.</summary>
         public const int Version = 1;
 
         /// <summary>Creates an empty profile; <see cref="Calibrator"/> fills it.</summary>
-        public CalibrationProfile()
-        {
-            for (int i = 0; i < RoleSlots; i++)
-            {
-                _deviceIds[i] = -1;
-                _serials[i] = string.Empty;
-                _deviceAtCalibration[i] = _jointAtCalibration[i] = _jointInDevice[i] = RigidPose.Identity;
-            }
-        }
+        public CalibrationProfile() { }
 
         /// <summary>How the offsets were obtained.</summary>
         public OffsetMode Mode { get; private set; }
@@ -56,34 +47,34 @@ namespace AvatarGo.Core
         public Vector3 RootToHead { get; internal set; }
 
         /// <summary>The id of the device playing <paramref name="role"/>, or -1.</summary>
-        public int DeviceId(DeviceRole role) => _deviceIds[(int)role];
+        public int DeviceId(DeviceRole role) => _deviceIds[role];
 
         /// <summary>The serial of the device playing <paramref name="role"/> (to recognise it next time).</summary>
-        public string Serial(DeviceRole role) => _serials[(int)role];
+        public string Serial(DeviceRole role) => _serials[role];
 
         /// <summary><c>p0(T), R0(T)</c>: the device's pose at the walk-in.</summary>
-        public RigidPose DeviceAtCalibration(DeviceRole role) => _deviceAtCalibration[(int)role];
+        public RigidPose DeviceAtCalibration(DeviceRole role) => _deviceAtCalibration[role];
 
         /// <summary><c>p0(J), R0(J)</c>: the avatar joint's world pose at the walk-in.</summary>
-        public RigidPose JointAtCalibration(DeviceRole role) => _jointAtCalibration[(int)role];
+        public RigidPose JointAtCalibration(DeviceRole role) => _jointAtCalibration[role];
 
         /// <summary>
         /// The joint's pose in the device frame: (<c>R0(T)^-1 v0(TJ)</c>, <c>R0(T)^-1 R0(J)</c>). The joint's world pose
         /// each frame is <c>devicePose * JointInDevice(role)</c>.
         /// </summary>
-        public RigidPose JointInDevice(DeviceRole role) => _jointInDevice[(int)role];
+        public RigidPose JointInDevice(DeviceRole role) => _jointInDevice[role];
 
         internal void SetDevice(DeviceRole role, DeviceInfo device)
         {
-            _deviceIds[(int)role] = device.Id;
-            _serials[(int)role] = device.Serial;
+            _deviceIds[role] = device.Id;
+            _serials[role] = device.Serial;
         }
 
         internal void SetOffsets(DeviceRole role, RigidPose device, RigidPose joint)
         {
-            _deviceAtCalibration[(int)role] = device;
-            _jointAtCalibration[(int)role] = joint;
-            _jointInDevice[(int)role] = joint.RelativeTo(device);
+            _deviceAtCalibration[role] = device;
+            _jointAtCalibration[role] = joint;
+            _jointInDevice[role] = joint.RelativeTo(device);
         }
 
         /// <summary>
@@ -100,9 +91,9 @@ namespace AvatarGo.Core
             Vector3 origin = Placement.Position;
             foreach (DeviceRole role in BodyRoles.All)
             {
-                RigidPose joint = _jointAtCalibration[(int)role];
+                RigidPose joint = _jointAtCalibration[role];
                 var moved = new RigidPose(origin + (joint.Position - origin) * ratio, joint.Rotation);
-                p.SetOffsets(role, _deviceAtCalibration[(int)role], moved);
+                p.SetOffsets(role, _deviceAtCalibration[role], moved);
             }
             if (Mode == OffsetMode.Fixed) return p.WithFixedOffsets();
             return p;
@@ -117,7 +108,7 @@ namespace AvatarGo.Core
             if (devices == null) return false;
             foreach (DeviceRole role in BodyRoles.All)
             {
-                string serial = _serials[(int)role];
+                string serial = _serials[role];
                 bool found = false;
                 if (!string.IsNullOrEmpty(serial))
                     for (int i = 0; i < devices.Count && !found; i++) found = devices[i].Serial == serial;
@@ -127,10 +118,10 @@ namespace AvatarGo.Core
         }
 
         /// <summary>A copy whose device ids are those of this session's devices (matched when restoring by serial).</summary>
-        internal CalibrationProfile WithDeviceIds(System.Collections.Generic.IReadOnlyList<DeviceInfo> devices, int[] deviceIndexByRole)
+        internal CalibrationProfile WithDeviceIds(System.Collections.Generic.IReadOnlyList<DeviceInfo> devices, PerRole<int> deviceIndexByRole)
         {
             var p = new CalibrationProfile(this);
-            foreach (DeviceRole role in BodyRoles.All) p.SetDevice(role, devices[deviceIndexByRole[(int)role]]);
+            foreach (DeviceRole role in BodyRoles.All) p.SetDevice(role, devices[deviceIndexByRole[role]]);
             return p;
         }
 
@@ -155,18 +146,18 @@ namespace AvatarGo.Core
                 Vector3 position = role == DeviceRole.Head ? FixedHeadOffset
                     : role == DeviceRole.LeftHand || role == DeviceRole.RightHand ? FixedWristOffset
                     : Vector3.Zero;
-                p._jointInDevice[(int)role] = new RigidPose(position, _jointInDevice[(int)role].Rotation);
+                p._jointInDevice[role] = new RigidPose(position, _jointInDevice[role].Rotation);
             }
             return p;
         }
 
         private CalibrationProfile(CalibrationProfile other)
         {
-            Array.Copy(other._deviceIds, _deviceIds, RoleSlots);
-            Array.Copy(other._serials, _serials, RoleSlots);
-            Array.Copy(other._deviceAtCalibration, _deviceAtCalibration, RoleSlots);
-            Array.Copy(other._jointAtCalibration, _jointAtCalibration, RoleSlots);
-            Array.Copy(other._jointInDevice, _jointInDevice, RoleSlots);
+            _deviceIds.CopyFrom(other._deviceIds);
+            _serials.CopyFrom(other._serials);
+            _deviceAtCalibration.CopyFrom(other._deviceAtCalibration);
+            _jointAtCalibration.CopyFrom(other._jointAtCalibration);
+            _jointInDevice.CopyFrom(other._jointInDevice);
             Mode = other.Mode;
             AvatarScale = other.AvatarScale;
             WearerEyeHeight = other.WearerEyeHeight;

@@ -21,6 +21,12 @@ namespace AvatarGo.Core
         /// <summary>Height of a foot tracker's origin above the floor, used only when the floor is estimated (8 cm).</summary>
         public float FootTrackerHeight { get; set; } = 0.08f;
 
+        /// <summary>
+        /// When false (the default) only a controller's trigger runs a calibration step; a press attributed to a tracker or
+        /// the HMD is ignored (and the step result says so). Set it for runtimes that report presses on other devices.
+        /// </summary>
+        public bool AcceptTriggerFromAnyDevice { get; set; }
+
         /// <summary>How far in front of the ankle a foot tracker sits, used to place the avatar (8 cm).</summary>
         public float FootTrackerForward { get; set; } = 0.08f;
     }

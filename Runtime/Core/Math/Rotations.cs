@@ -49,21 +49,26 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// The shortest rotation taking direction <paramref name="from"/> to direction <paramref name="to"/>
-        /// (Unity's <c>Quaternion.FromToRotation</c>); stable for opposite directions.
+        /// (Unity's <c>Quaternion.FromToRotation</c>), computed in double precision: near-opposite directions (a limb
+        /// swung through almost 180°) lose a millimetre in single precision. Opposite directions give half a turn about
+        /// an axis perpendicular to <paramref name="from"/>; a zero or non-finite direction gives the identity.
         /// </summary>
         public static Quaternion FromTo(Vector3 from, Vector3 to)
         {
-            Vector3 a = Vectors.NormalizeOr(from, Vector3.UnitZ);
-            Vector3 b = Vectors.NormalizeOr(to, Vector3.UnitZ);
-            float dot = Vector3.Dot(a, b);
-            if (dot < -0.999999f)
+            double fx = from.X, fy = from.Y, fz = from.Z, tx = to.X, ty = to.Y, tz = to.Z;
+            double fl = Math.Sqrt(fx * fx + fy * fy + fz * fz), tl = Math.Sqrt(tx * tx + ty * ty + tz * tz);
+            if (!(fl > 1e-12) || !(tl > 1e-12) || double.IsInfinity(fl) || double.IsInfinity(tl)) return Quaternion.Identity;
+            fx /= fl; fy /= fl; fz /= fl; tx /= tl; ty /= tl; tz /= tl;
+            double cx = fy * tz - fz * ty, cy = fz * tx - fx * tz, cz = fx * ty - fy * tx;
+            double w = 1.0 + fx * tx + fy * ty + fz * tz;
+            if (w < 1e-12)
             {
-                Vector3 axis = Vector3.Cross(Vector3.UnitX, a);
-                if (axis.LengthSquared() < 1e-6f) axis = Vector3.Cross(Vector3.UnitY, a);
-                return Quaternion.CreateFromAxisAngle(Vector3.Normalize(axis), MathF.PI);
+                // Opposite: half a turn about any axis perpendicular to from.
+                if (Math.Abs(fx) < 0.9) { cx = 0; cy = -fz; cz = fy; } else { cx = fz; cy = 0; cz = -fx; }
+                w = 0;
             }
-            Vector3 c = Vector3.Cross(a, b);
-            return Quaternion.Normalize(new Quaternion(c.X, c.Y, c.Z, 1f + dot));
+            double n = Math.Sqrt(cx * cx + cy * cy + cz * cz + w * w);
+            return new Quaternion((float)(cx / n), (float)(cy / n), (float)(cz / n), (float)(w / n));
         }
 
         /// <summary>

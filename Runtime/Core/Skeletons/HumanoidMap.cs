@@ -64,6 +64,19 @@ namespace AvatarGo.Core
             return missing;
         }
 
+        /// <summary>
+        /// Throws unless every required bone is mapped: the one guard of the types that need a complete humanoid
+        /// (calibration, the T-pose, the body IK, the simulator).
+        /// </summary>
+        /// <param name="parameterName">The caller's parameter that holds this map, for the exception.</param>
+        /// <exception cref="ArgumentException">A required bone is missing; the message lists them.</exception>
+        public void RequireComplete(string parameterName)
+        {
+            IReadOnlyList<HumanoidBone> missing = MissingRequired();
+            if (missing.Count > 0)
+                throw new ArgumentException($"The rig lacks required humanoid bones: {string.Join(", ", missing)}.", parameterName);
+        }
+
         /// <summary>True when every required bone is mapped.</summary>
         public bool IsComplete => MissingRequired().Count == 0;
 

@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 
 namespace AvatarGo.Core
 {
@@ -51,6 +52,30 @@ namespace AvatarGo.Core
                 int parent = Skeleton.GetParent(j);
                 World[j] = (parent < 0 ? Origin : World[parent]) * Local[j];
             }
+        }
+
+        /// <summary>
+        /// Sets the local rotation of <paramref name="joint"/> so that its world rotation becomes <paramref name="world"/>,
+        /// from its parent's world rotation (which must be up to date). <see cref="World"/> is not updated.
+        /// </summary>
+        public void SetWorldRotation(int joint, Quaternion world)
+        {
+            int parent = Skeleton.GetParent(joint);
+            Quaternion parentRotation = parent < 0 ? Origin.Rotation : World[parent].Rotation;
+            Local[joint] = Local[joint].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(parentRotation) * world));
+        }
+
+        /// <summary>Turns <paramref name="joint"/> by the world-space rotation <paramref name="delta"/> (applied after its current world rotation); see <see cref="SetWorldRotation"/>.</summary>
+        public void RotateWorld(int joint, Quaternion delta) => SetWorldRotation(joint, Quaternion.Normalize(delta * World[joint].Rotation));
+
+        /// <summary>
+        /// Sets the local pose of <paramref name="joint"/> so that its world pose becomes <paramref name="world"/>, from its
+        /// parent's world pose (which must be up to date). <see cref="World"/> is not updated.
+        /// </summary>
+        public void SetWorldPose(int joint, RigidPose world)
+        {
+            int parent = Skeleton.GetParent(joint);
+            Local[joint] = world.RelativeTo(parent < 0 ? Origin : World[parent]);
         }
 
         /// <summary>Recomputes <see cref="Local"/> from <see cref="World"/>.</summary>

@@ -22,8 +22,7 @@ namespace AvatarGo.Core
         {
             if (map == null) throw new ArgumentNullException(nameof(map));
             if (pose == null || pose.Skeleton != map.Skeleton) throw new ArgumentException("The pose must belong to the map's skeleton.", nameof(pose));
-            var missing = map.MissingRequired();
-            if (missing.Count > 0) throw new ArgumentException($"The rig lacks required bones: {string.Join(", ", missing)}.", nameof(map));
+            map.RequireComplete(nameof(map));
             Skeleton s = map.Skeleton;
             pose.Origin = RigidPose.Identity;
             pose.ResetToRest();
@@ -99,10 +98,7 @@ namespace AvatarGo.Core
             if (j < 0 || c < 0) return;
             Vector3 d = pose.World[c].Position - pose.World[j].Position;
             if (d.LengthSquared() < 1e-10f) return;
-            Quaternion world = Quaternion.Normalize(Rotations.FromTo(d, direction) * pose.World[j].Rotation);
-            int parent = pose.Skeleton.GetParent(j);
-            Quaternion parentRotation = parent < 0 ? pose.Origin.Rotation : pose.World[parent].Rotation;
-            pose.Local[j] = pose.Local[j].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(parentRotation) * world));
+            pose.RotateWorld(j, Rotations.FromTo(d, direction));
             pose.UpdateWorld();
         }
     }

@@ -55,8 +55,7 @@ namespace AvatarGo.Core
         public FullBodyIk(HumanoidMap map, SkeletonPose reference = null)
         {
             Map = map ?? throw new ArgumentNullException(nameof(map));
-            var missing = map.MissingRequired();
-            if (missing.Count > 0) throw new ArgumentException($"The rig lacks required bones: {string.Join(", ", missing)}.", nameof(map));
+            map.RequireComplete(nameof(map));
             Skeleton s = map.Skeleton;
             _hips = map[HumanoidBone.Hips];
             _head = map[HumanoidBone.Head];
@@ -103,7 +102,7 @@ namespace AvatarGo.Core
             if (pose == null) throw new ArgumentNullException(nameof(pose));
             var report = new IkReport();
             RigidPose[] w = pose.World;
-            if (targets.HipsActive && targets.Hips.IsValid) SetWorld(pose, _hips, targets.Hips);
+            if (targets.HipsActive && targets.Hips.IsValid) pose.SetWorldPose(_hips, targets.Hips);
             pose.UpdateWorld();
 
             if (targets.HeadActive && targets.Head.IsValid)
@@ -122,7 +121,7 @@ namespace AvatarGo.Core
                     }
                 }
                 report.HeadDistanceLeft = Vector3.Distance(w[_head].Position, targets.Head.Position);
-                SetWorldRotation(pose, _head, targets.Head.Rotation);
+                pose.SetWorldRotation(_head, targets.Head.Rotation);
                 pose.UpdateWorld();
             }
 
@@ -183,11 +182,11 @@ namespace AvatarGo.Core
             BendSpine(pose, axis, bestPhi, count, end);
             _spinePhi = bestPhi;
             Quaternion aim = Rotations.FromTo(w[end].Position - origin, endTarget - origin);
-            RotateWorld(pose, _spine[0], aim);
+            pose.RotateWorld(_spine[0], aim);
             pose.UpdateWorld(_spinePath);
             if (end != _head)
             {
-                RotateWorld(pose, _neck, Rotations.FromTo(w[_head].Position - w[_neck].Position, headTarget - w[_neck].Position));
+                pose.RotateWorld(_neck, Rotations.FromTo(w[_head].Position - w[_neck].Position, headTarget - w[_neck].Position));
                 pose.UpdateWorld(_spinePath);
             }
             // What the one-axis curve cannot reach (a target that needs the back's reference curve undone in another
@@ -196,7 +195,7 @@ namespace AvatarGo.Core
                 for (int i = _spine.Length - 1; i >= 0; i--)
                 {
                     Vector3 pivot = w[_spine[i]].Position;
-                    RotateWorld(pose, _spine[i], Rotations.FromTo(w[_head].Position - pivot, headTarget - pivot));
+                    pose.RotateWorld(_spine[i], Rotations.FromTo(w[_head].Position - pivot, headTarget - pivot));
                     pose.UpdateWorld(_spinePath);
                 }
         }
@@ -210,7 +209,7 @@ namespace AvatarGo.Core
             pose.UpdateWorld(_spinePath);
             for (int i = 0; i < count; i++)
             {
-                RotateWorld(pose, _spine[i], turn);
+                pose.RotateWorld(_spine[i], turn);
                 pose.UpdateWorld(_spinePath);
             }
             return Vector3.Distance(pose.World[_spine[0]].Position, pose.World[end].Position);
@@ -235,28 +234,10 @@ namespace AvatarGo.Core
             Quaternion turn = Rotations.FromTo(shoulder - pivot, wanted - pivot);
             float angle = Rotations.AngleDegrees(Quaternion.Identity, turn);
             if (angle > MaxClavicleDegrees) turn = Quaternion.Slerp(Quaternion.Identity, turn, MaxClavicleDegrees / angle);
-            RotateWorld(pose, clavicle, turn);
+            pose.RotateWorld(clavicle, turn);
             int p = pose.Skeleton.GetParent(clavicle);
             pose.World[clavicle] = (p < 0 ? pose.Origin : pose.World[p]) * pose.Local[clavicle];
             return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
         }
-
-        private static Quaternion ParentRotation(SkeletonPose pose, int joint)
-        {
-            int parent = pose.Skeleton.GetParent(joint);
-            return parent < 0 ? pose.Origin.Rotation : pose.World[parent].Rotation;
-        }
-
-        private static void SetWorld(SkeletonPose pose, int joint, RigidPose world)
-        {
-            int parent = pose.Skeleton.GetParent(joint);
-            pose.Local[joint] = world.RelativeTo(parent < 0 ? pose.Origin : pose.World[parent]);
-        }
-
-        private static void SetWorldRotation(SkeletonPose pose, int joint, Quaternion world) =>
-            pose.Local[joint] = pose.Local[joint].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(ParentRotation(pose, joint)) * world));
-
-        private static void RotateWorld(SkeletonPose pose, int joint, Quaternion delta) =>
-            SetWorldRotation(pose, joint, delta * pose.World[joint].Rotation);
     }
 }

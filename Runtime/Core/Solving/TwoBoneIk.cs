@@ -82,7 +82,7 @@ namespace AvatarGo.Core
 
             // 2. Aim the root at the goal, and 3. twist about the root→goal axis so the middle joint faces the hint.
             Vector3 aim = goalDistance > 1e-6f ? toGoal : c - a;
-            Quaternion swing = FromTo(c - a, aim);
+            Quaternion swing = Rotations.FromTo(c - a, aim);
             Vector3 u = Vectors.NormalizeOr(aim, Vector3.UnitY);
             Quaternion turn = swing;
             if (hasHint)
@@ -101,35 +101,12 @@ namespace AvatarGo.Core
             int endParent = pose.Skeleton.GetParent(chain.End);
             if (Rotations.IsUnit(goal.Rotation))
             {
-                Quaternion local = Quaternion.Normalize(Quaternion.Conjugate(w[endParent].Rotation) * goal.Rotation);
-                pose.Local[chain.End] = pose.Local[chain.End].WithRotation(local);
+                pose.SetWorldRotation(chain.End, goal.Rotation);
                 w[chain.End] = w[endParent] * pose.Local[chain.End];
             }
             float left = Vector3.Distance(w[chain.End].Position, goal.Position);
             if (!Vectors.IsFinite(left)) left = float.PositiveInfinity;
             return new LimbResult(left <= ReachedTolerance, left);
-        }
-
-        /// <summary>
-        /// The shortest rotation taking <paramref name="from"/> to <paramref name="to"/>, computed in double precision:
-        /// near-opposite directions (a limb swung through almost 180°) lose a millimetre in single precision.
-        /// </summary>
-        private static Quaternion FromTo(Vector3 from, Vector3 to)
-        {
-            double fx = from.X, fy = from.Y, fz = from.Z, tx = to.X, ty = to.Y, tz = to.Z;
-            double fl = Math.Sqrt(fx * fx + fy * fy + fz * fz), tl = Math.Sqrt(tx * tx + ty * ty + tz * tz);
-            if (!(fl > 1e-12) || !(tl > 1e-12) || double.IsInfinity(fl) || double.IsInfinity(tl)) return Quaternion.Identity;
-            fx /= fl; fy /= fl; fz /= fl; tx /= tl; ty /= tl; tz /= tl;
-            double cx = fy * tz - fz * ty, cy = fz * tx - fx * tz, cz = fx * ty - fy * tx;
-            double w = 1.0 + fx * tx + fy * ty + fz * tz;
-            if (w < 1e-12)
-            {
-                // Opposite: half a turn about any axis perpendicular to from.
-                if (Math.Abs(fx) < 0.9) { cx = 0; cy = -fz; cz = fy; } else { cx = fz; cy = 0; cz = -fx; }
-                w = 0;
-            }
-            double n = Math.Sqrt(cx * cx + cy * cy + cz * cz + w * w);
-            return new Quaternion((float)(cx / n), (float)(cy / n), (float)(cz / n), (float)(w / n));
         }
 
         private static int IndexInPath(LimbChain chain, int joint)
@@ -143,12 +120,7 @@ namespace AvatarGo.Core
         /// <summary>Applies a world-space rotation <paramref name="delta"/> to the chain's joint at <paramref name="pathIndex"/> and refreshes the chain below it.</summary>
         private static void RotateJoint(SkeletonPose pose, LimbChain chain, int pathIndex, Quaternion delta)
         {
-            RigidPose[] w = pose.World;
-            int joint = chain.Path[pathIndex];
-            int parent = pose.Skeleton.GetParent(joint);
-            Quaternion parentRotation = parent < 0 ? pose.Origin.Rotation : w[parent].Rotation;
-            Quaternion world = Quaternion.Normalize(delta * w[joint].Rotation);
-            pose.Local[joint] = pose.Local[joint].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(parentRotation) * world));
+            pose.RotateWorld(chain.Path[pathIndex], delta);
             UpdatePath(pose, chain, pathIndex);
         }
 

@@ -31,7 +31,7 @@ namespace AvatarGo.Simulation
             var report = new EvaluationReport { Mode = mode };
             var calibrator = new Calibrator(header.Devices, avatar);
             SessionFrame frame = reader.CreateFrame();
-            BodySolver solver = null;
+            BodyTargetMapper solver = null;
             FullBodyIk ik = null;
             SkeletonPose pose = null;
             var targets = new BodyTargets();
@@ -48,7 +48,7 @@ namespace AvatarGo.Simulation
                     CalibrationProfile profile = mode == OffsetMode.Exact ? calibrator.Profile : calibrator.Profile.WithFixedOffsets();
                     report.Profile = profile;
                     scaled = calibrator.ScaledAvatar;
-                    solver = new BodySolver(profile, header.Devices, scaled, calibrator.AvatarPose);
+                    solver = new BodyTargetMapper(profile, header.Devices, scaled, calibrator.AvatarPose);
                     ik = new FullBodyIk(scaled, calibrator.AvatarPose);
                     pose = new SkeletonPose(scaled.Skeleton);
                     pose.CopyFrom(calibrator.AvatarPose);
@@ -60,7 +60,7 @@ namespace AvatarGo.Simulation
                     continue;
                 }
 
-                solver.Solve(frame.Samples, ref targets);
+                solver.Compute(frame.Samples, ref targets);
                 IkReport ikReport = ik.Solve(in targets, pose);
                 if (!ikReport.LeftHand.Reached || !ikReport.RightHand.Reached) report.UnreachedHandFrames++;
                 onFrame?.Invoke(pose);
@@ -95,7 +95,7 @@ namespace AvatarGo.Simulation
                     report.KneeAngleDegrees.Add(Math.Abs(avatarAngle - truthAngle));
                 }
             }
-            if (solver == null) report.CalibrationMessage = calibrator.LastMessage;
+            if (solver == null) report.CalibrationMessage = calibrator.LastStep.Message;
             return report;
         }
 

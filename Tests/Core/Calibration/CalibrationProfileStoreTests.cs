@@ -16,7 +16,7 @@ namespace AvatarGo.Core.Tests
             wearer.HoldAndPress(calibrator, ref t, 0.001f, 0.1f);
             wearer.StandInTPose(calibrator.Profile.Placement);
             wearer.HoldAndPress(calibrator, ref t, 0.001f, 0.1f);
-            Assume.That(calibrator.State, Is.EqualTo(CalibrationState.Calibrated), calibrator.LastMessage);
+            Assume.That(calibrator.State, Is.EqualTo(CalibrationState.Calibrated), calibrator.LastStep.Message);
             return calibrator;
         }
 
@@ -71,13 +71,13 @@ namespace AvatarGo.Core.Tests
             var second = new Calibrator(wearer.Devices, wearer.Map);
             Assert.That(second.TryRestore(loaded), Is.True);
             Assert.That(second.State, Is.EqualTo(CalibrationState.Calibrated));
-            var a = new BodySolver(first.Profile, wearer.Devices, first.ScaledAvatar, first.AvatarPose);
-            var b = new BodySolver(second.Profile, wearer.Devices, second.ScaledAvatar, second.AvatarPose);
+            var a = new BodyTargetMapper(first.Profile, wearer.Devices, first.ScaledAvatar, first.AvatarPose);
+            var b = new BodyTargetMapper(second.Profile, wearer.Devices, second.ScaledAvatar, second.AvatarPose);
             var samples = new DeviceSample[6];
             wearer.Sample(samples, 0, 0);
             BodyTargets ta = default, tb = default;
-            a.Solve(samples, ref ta);
-            b.Solve(samples, ref tb);
+            a.Compute(samples, ref ta);
+            b.Compute(samples, ref tb);
             Approx.Near(ta.Hips, tb.Hips, 1e-5f, 0.01f, "hips");
             Approx.Near(ta.LeftHand.Goal, tb.LeftHand.Goal, 1e-5f, 0.01f, "left hand");
 

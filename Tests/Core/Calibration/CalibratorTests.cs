@@ -22,7 +22,7 @@ namespace AvatarGo.Core.Tests
                 wearer.StandInTPose(RandomPlacement(rng, facing));
                 double t = 0;
                 wearer.HoldAndPress(calibrator, ref t, 0.002f, 0.2f);
-                Assert.That(calibrator.LastError, Is.EqualTo(CalibrationError.None), $"facing {facing * 45}°: {calibrator.LastMessage}");
+                Assert.That(calibrator.LastStep.Error, Is.EqualTo(CalibrationError.None), $"facing {facing * 45}°: {calibrator.LastStep.Message}");
                 Assert.That(calibrator.State, Is.EqualTo(CalibrationState.WalkIn));
                 for (int d = 0; d < wearer.Devices.Length; d++)
                     Assert.That(calibrator.DeviceIndexOf(Wearer.TrueRoles[d]), Is.EqualTo(d), $"facing {facing * 45}°: {Wearer.TrueRoles[d]}");
@@ -42,13 +42,13 @@ namespace AvatarGo.Core.Tests
                 wearer.StandInTPose(RandomPlacement(rng, trial * 2));
                 double t = 0;
                 wearer.HoldAndPress(calibrator, ref t, 0.002f, 0.2f);
-                Assume.That(calibrator.State, Is.EqualTo(CalibrationState.WalkIn), calibrator.LastMessage);
+                Assume.That(calibrator.State, Is.EqualTo(CalibrationState.WalkIn), calibrator.LastStep.Message);
                 // The avatar has the wearer's proportions: its scale must be 1 within 0.5 %.
                 Assert.That(calibrator.Profile.AvatarScale, Is.EqualTo(1f).Within(0.005f), "scale");
                 // The wearer walks into the avatar exactly and presses again.
                 wearer.StandInTPose(calibrator.Profile.Placement);
                 wearer.HoldAndPress(calibrator, ref t, 0.002f, 0.2f);
-                Assert.That(calibrator.State, Is.EqualTo(CalibrationState.Calibrated), calibrator.LastMessage);
+                Assert.That(calibrator.State, Is.EqualTo(CalibrationState.Calibrated), calibrator.LastStep.Message);
                 foreach (DeviceRole role in BodyRoles.All)
                 {
                     RigidPose truth = wearer.Rig.DeviceInJoint(role).Inverse();

@@ -27,8 +27,8 @@ namespace AvatarGo.Core.Tests
                 for (int d = 0; d < fed.Length; d++) fed[d] = all[Array.IndexOf(wearer.Devices, list[d]) >= 0 ? Array.IndexOf(wearer.Devices, list[d]) : d];
                 calibrator.Update(i / 90.0, fed, i == 89 ? press : null);
             }
-            Assert.That(calibrator.LastMessage, Is.Not.Empty);
-            return calibrator.LastError;
+            Assert.That(calibrator.LastStep.Message, Is.Not.Empty);
+            return calibrator.LastStep.Error;
         }
 
         private static void Turn(Wearer w, HumanoidBone bone, Vector3 axis, float degrees)
@@ -132,8 +132,8 @@ namespace AvatarGo.Core.Tests
                 seven[6] = new DeviceSample(new RigidPose(new Vector3(1.5f, 0.9f, 2f), Quaternion.Identity), true); // on a table nearby
                 calibrator.Update(i / 90.0, seven, i == 89 ? new[] { new DeviceEvent(1, DeviceEventKind.TriggerPressed) } : null);
             }
-            Assert.That(calibrator.LastError, Is.EqualTo(CalibrationError.None), calibrator.LastMessage);
-            Assert.That(calibrator.Explanation, Does.Contain("ignored"));
+            Assert.That(calibrator.LastStep.Error, Is.EqualTo(CalibrationError.None), calibrator.LastStep.Message);
+            Assert.That(calibrator.LastStep.Explanation, Does.Contain("ignored"));
             for (int d = 0; d < 6; d++) Assert.That(calibrator.DeviceIndexOf(Wearer.TrueRoles[d]), Is.EqualTo(d));
         }
     }

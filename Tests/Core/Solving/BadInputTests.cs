@@ -17,16 +17,16 @@ namespace AvatarGo.Core.Tests
             wearer.HoldAndPress(calibrator, ref t, 0.001f, 0.1f);
             wearer.StandInTPose(calibrator.Profile.Placement);
             wearer.HoldAndPress(calibrator, ref t, 0.001f, 0.1f);
-            Assume.That(calibrator.State, Is.EqualTo(CalibrationState.Calibrated), calibrator.LastMessage);
+            Assume.That(calibrator.State, Is.EqualTo(CalibrationState.Calibrated), calibrator.LastStep.Message);
 
-            var solver = new BodySolver(calibrator.Profile, wearer.Devices, calibrator.ScaledAvatar, calibrator.AvatarPose);
+            var solver = new BodyTargetMapper(calibrator.Profile, wearer.Devices, calibrator.ScaledAvatar, calibrator.AvatarPose);
             var ik = new FullBodyIk(calibrator.ScaledAvatar, calibrator.AvatarPose);
             var pose = new SkeletonPose(calibrator.ScaledAvatar.Skeleton);
             pose.CopyFrom(calibrator.AvatarPose);
             var targets = new BodyTargets();
             var samples = new DeviceSample[6];
             wearer.Sample(samples, 0.001f, 0.1f);
-            solver.Solve(samples, ref targets);
+            solver.Compute(samples, ref targets);
             ik.Solve(in targets, pose);
             int hips = calibrator.ScaledAvatar[HumanoidBone.Hips];
             RigidPose goodHips = pose.World[hips];
@@ -47,7 +47,7 @@ namespace AvatarGo.Core.Tests
                 samples[pelvis] = garbage;
                 samples[hmd] = garbage;
                 samples[hand] = garbage;
-                solver.Solve(samples, ref targets);
+                solver.Compute(samples, ref targets);
                 Assert.That(targets.HipsActive, Is.False);
                 Assert.That(targets.LeftHand.IsActive, Is.False);
                 ik.Solve(in targets, pose);

@@ -120,7 +120,7 @@ internal sealed class BenchFixture
 {
     private DeviceSample[][] _samples;
     private BodyTargets[] _targets;
-    private BodySolver _solver;
+    private BodyTargetMapper _solver;
     private FullBodyIk _ik;
     private SkeletonPose _pose;
     private BodyTargets _scratch;
@@ -144,24 +144,24 @@ internal sealed class BenchFixture
             if (calibrator.State != CalibrationState.Calibrated) { calibrator.Update(frame.Time, frame.Samples, frame.Events); continue; }
             if (samples.Count < maxFrames) samples.Add((DeviceSample[])frame.Samples.Clone());
         }
-        if (calibrator.State != CalibrationState.Calibrated) throw new InvalidDataException("calibration did not complete: " + calibrator.LastMessage);
+        if (calibrator.State != CalibrationState.Calibrated) throw new InvalidDataException("calibration did not complete: " + calibrator.LastStep.Message);
         var f = new BenchFixture
         {
             Clip = clipPath,
             _samples = samples.ToArray(),
-            _solver = new BodySolver(calibrator.Profile, reader.Header.Devices, calibrator.ScaledAvatar, calibrator.AvatarPose),
+            _solver = new BodyTargetMapper(calibrator.Profile, reader.Header.Devices, calibrator.ScaledAvatar, calibrator.AvatarPose),
             _ik = new FullBodyIk(calibrator.ScaledAvatar, calibrator.AvatarPose),
             _pose = new SkeletonPose(calibrator.ScaledAvatar.Skeleton),
         };
         f._pose.CopyFrom(calibrator.AvatarPose);
         f._targets = new BodyTargets[f._samples.Length];
-        for (int i = 0; i < f._samples.Length; i++) f._solver.Solve(f._samples[i], ref f._targets[i]);
+        for (int i = 0; i < f._samples.Length; i++) f._solver.Compute(f._samples[i], ref f._targets[i]);
         return f;
     }
 
     public void SolveTargets()
     {
-        for (int i = 0; i < _samples.Length; i++) _solver.Solve(_samples[i], ref _scratch);
+        for (int i = 0; i < _samples.Length; i++) _solver.Compute(_samples[i], ref _scratch);
     }
 
     public void SolveIk()
@@ -173,7 +173,7 @@ internal sealed class BenchFixture
     {
         for (int i = 0; i < _samples.Length; i++)
         {
-            _solver.Solve(_samples[i], ref _scratch);
+            _solver.Compute(_samples[i], ref _scratch);
             _ik.Solve(in _scratch, _pose);
         }
     }

@@ -46,7 +46,7 @@ public sealed class CalibrateCommand : ICommand
             calibrator.Update(frame.Time, frame.Samples, frame.Events);
             foreach (DeviceEvent e in frame.Events)
                 if (e.Kind == DeviceEventKind.TriggerPressed) presses++;
-            if (calibrator.LastError != CalibrationError.None) lastRefusal = $"{calibrator.LastError}: {calibrator.LastMessage}";
+            if (calibrator.LastStep.Error != CalibrationError.None) lastRefusal = $"{calibrator.LastStep.Error}: {calibrator.LastStep.Message}";
         }
         bool ok = calibrator.State == CalibrationState.Calibrated;
         var inv = CultureInfo.InvariantCulture;
@@ -55,8 +55,8 @@ public sealed class CalibrateCommand : ICommand
             string profile = ok ? CalibrationProfileStore.ToJson(calibrator.Profile) : "null";
             stdout.WriteLine("{");
             stdout.WriteLine($"  \"status\": \"{(ok ? "calibrated" : calibrator.State.ToString())}\",");
-            stdout.WriteLine($"  \"error\": {JsonSerializer.Serialize(calibrator.LastError.ToString())},");
-            stdout.WriteLine($"  \"message\": {JsonSerializer.Serialize(calibrator.LastMessage)},");
+            stdout.WriteLine($"  \"error\": {JsonSerializer.Serialize(calibrator.LastStep.Error.ToString())},");
+            stdout.WriteLine($"  \"message\": {JsonSerializer.Serialize(calibrator.LastStep.Message)},");
             stdout.WriteLine($"  \"profile\": {profile.TrimEnd().Replace("\n", "\n  ")}");
             stdout.WriteLine("}");
         }
@@ -64,8 +64,8 @@ public sealed class CalibrateCommand : ICommand
         {
             stdout.WriteLine($"status: {(ok ? "calibrated" : "not calibrated (" + calibrator.State + ")")} after {presses} trigger press(es)");
             if (lastRefusal != null) stdout.WriteLine($"last refusal: {lastRefusal}");
-            if (!ok) stdout.WriteLine($"message: {calibrator.LastMessage}");
-            if (calibrator.Explanation.Length > 0) stdout.WriteLine($"note: {calibrator.Explanation.Trim()}");
+            if (!ok) stdout.WriteLine($"message: {calibrator.LastStep.Message}");
+            if (calibrator.LastStep.Explanation.Length > 0) stdout.WriteLine($"note: {calibrator.LastStep.Explanation.Trim()}");
             if (calibrator.Profile != null)
             {
                 CalibrationProfile p = calibrator.Profile;

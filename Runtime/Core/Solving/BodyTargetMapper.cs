@@ -16,21 +16,21 @@ namespace AvatarGo.Core
     /// themselves, as the paper writes it): the same vector up to the constant device offsets, but without the
     /// HMD's lever arm, so that nodding does not bend the back.
     /// </remarks>
-    public sealed class BodySolver
+    public sealed class BodyTargetMapper
     {
-        private readonly int[] _deviceIndex = new int[7];
-        private readonly RigidPose[] _jointInDevice = new RigidPose[7];
+        private readonly PerRole<int> _deviceIndex = new PerRole<int>(-1);
+        private readonly PerRole<RigidPose> _jointInDevice = new PerRole<RigidPose>();
         private readonly Vector3 _rootToHead0;
         private readonly Quaternion _hipsRotation0;
         private readonly Vector3[] _kneeInFoot = new Vector3[2];
         private readonly Vector3[] _elbowInHand = new Vector3[2];
 
         /// <summary>
-        /// Prepares the solver for a calibration. <paramref name="devices"/> is the device list whose order the
+        /// Prepares the mapping for a calibration. <paramref name="devices"/> is the device list whose order the
         /// per-frame samples follow; <paramref name="avatar"/> and <paramref name="calibrationPose"/> are the scaled
         /// avatar and its T-pose at the walk-in (<see cref="Calibrator.ScaledAvatar"/>, <see cref="Calibrator.AvatarPose"/>).
         /// </summary>
-        public BodySolver(CalibrationProfile profile, IReadOnlyList<DeviceInfo> devices, HumanoidMap avatar, SkeletonPose calibrationPose)
+        public BodyTargetMapper(CalibrationProfile profile, IReadOnlyList<DeviceInfo> devices, HumanoidMap avatar, SkeletonPose calibrationPose)
         {
             Profile = profile ?? throw new ArgumentNullException(nameof(profile));
             if (devices == null) throw new ArgumentNullException(nameof(devices));
@@ -38,11 +38,10 @@ namespace AvatarGo.Core
             if (calibrationPose == null) throw new ArgumentNullException(nameof(calibrationPose));
             foreach (DeviceRole role in BodyRoles.All)
             {
-                _deviceIndex[(int)role] = -1;
                 for (int i = 0; i < devices.Count; i++)
-                    if (devices[i].Id == profile.DeviceId(role)) _deviceIndex[(int)role] = i;
-                if (_deviceIndex[(int)role] < 0) throw new ArgumentException($"No device has the id calibrated for {role}.", nameof(devices));
-                _jointInDevice[(int)role] = profile.JointInDevice(role);
+                    if (devices[i].Id == profile.DeviceId(role)) _deviceIndex[role] = i;
+                if (_deviceIndex[role] < 0) throw new ArgumentException($"No device has the id calibrated for {role}.", nameof(devices));
+                _jointInDevice[role] = profile.JointInDevice(role);
             }
             RigidPose[] w = calibrationPose.World;
             RigidPose hips = w[avatar[HumanoidBone.Hips]];
@@ -70,8 +69,8 @@ namespace AvatarGo.Core
         /// <summary>The calibration used.</summary>
         public CalibrationProfile Profile { get; }
 
-        /// <summary>Computes this frame's targets from the device samples (in the constructor's device order).</summary>
-        public void Solve(ReadOnlySpan<DeviceSample> samples, ref BodyTargets targets)
+        /// <summary>Computes this frame's targets from the device samples (in the constructor's device order). Allocation-free.</summary>
+        public void Compute(ReadOnlySpan<DeviceSample> samples, ref BodyTargets targets)
         {
             targets.HipsActive = Joint(samples, DeviceRole.Pelvis, out targets.Hips);
             targets.HeadActive = Joint(samples, DeviceRole.Head, out targets.Head);
@@ -90,13 +89,13 @@ namespace AvatarGo.Core
 
         private bool Joint(ReadOnlySpan<DeviceSample> samples, DeviceRole role, out RigidPose joint)
         {
-            DeviceSample s = samples[_deviceIndex[(int)role]];
+            DeviceSample s = samples[_deviceIndex[role]];
             if (!s.IsUsable)
             {
                 joint = RigidPose.Identity;
                 return false;
             }
-            joint = s.Pose * _jointInDevice[(int)role];
+            joint = s.Pose * _jointInDevice[role];
             return true;
         }
 

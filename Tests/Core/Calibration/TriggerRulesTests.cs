@@ -1,0 +1,117 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+using NUnit.Framework;
+using AvatarGo.Simulation;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// Which trigger presses run a calibration step: one step per frame and per averaging window (the walk-in can never be
+    /// skipped), only a controller's trigger unless a setting says otherwise, and an untracked HMD named as such whatever
+    /// the device order.
+    /// </summary>
+    public class TriggerRulesTests
+    {
+        private static readonly DeviceEvent[] None = new DeviceEvent[0];
+
+        // Stands the mocapbank wearer in T-pose and feeds frames at 90 Hz; `events(frame)` gives each frame's events.
+        private static Calibrator Run(Func<int, IReadOnlyList<DeviceEvent>> events, int frames, CalibrationSettings settings = null,
+            Func<Wearer, IReadOnlyList<DeviceInfo>> devices = null, Action<DeviceSample[]> samples = null)
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 11, DeviceMountings.Default());
+            wearer.StandInTPose(RigidPose.Identity);
+            IReadOnlyList<DeviceInfo> list = devices?.Invoke(wearer) ?? wearer.Devices;
+            var calibrator = new Calibrator(list, wearer.Map, settings);
+            var truth = new DeviceSample[wearer.Devices.Length];
+            var fed = new DeviceSample[list.Count];
+            for (int i = 0; i < frames; i++)
+            {
+                wearer.Sample(truth, 0.001f, 0.1f);
+                samples?.Invoke(truth);
+                for (int d = 0; d < fed.Length; d++) fed[d] = truth[Array.IndexOf(wearer.Devices, list[d])];
+                calibrator.Update(i / 90.0, fed, events(i));
+            }
+            return calibrator;
+        }
+
+        private static DeviceEvent Press(int deviceId) => new DeviceEvent(deviceId, DeviceEventKind.TriggerPressed);
+
+        // Wearer's device ids: 1 and 2 are the controllers, 0 the HMD, 4, 7 and 9 the trackers.
+        [Test]
+        public void BothTriggersInOneFrameRunOneStep()
+        {
+            Calibrator c = Run(i => i == 89 ? new[] { Press(1), Press(2) } : None, 400);
+            Assert.That(c.State, Is.EqualTo(CalibrationState.WalkIn), "the second press of the frame must not compute the offsets");
+            Assert.That(c.LastStep.Outcome, Is.EqualTo(CalibrationStepOutcome.PressIgnored));
+            Assert.That(c.LastStep.Explanation, Does.Contain("same frame"));
+        }
+
+        [Test]
+        public void TheOtherTriggerAFrameLaterDoesNotSkipTheWalkIn()
+        {
+            // Two hands pressing almost together: the second press lands within the averaging window of the first step.
+            Calibrator c = Run(i => i == 89 ? new[] { Press(1) } : i == 91 ? new[] { Press(2) } : None, 400);
+            Assert.That(c.State, Is.EqualTo(CalibrationState.WalkIn));
+            Assert.That(c.LastStep.Explanation, Does.Contain("after the previous step"));
+        }
+
+        [Test]
+        public void APressAWindowLaterRunsTheWalkInStep()
+        {
+            // The control: the same wearer pressing again once the window has passed is calibrated.
+            Calibrator c = Run(i => i == 89 || i == 180 ? new[] { Press(2) } : None, 200);
+            Assert.That(c.State, Is.EqualTo(CalibrationState.Calibrated), c.LastStep.ToString());
+        }
+
+        [Test]
+        public void APressFromATrackerOrTheHmdIsIgnoredWithTheReason()
+        {
+            foreach (int id in new[] { 4, 0 })
+            {
+                Calibrator c = Run(i => i == 89 ? new[] { Press(id) } : None, 100);
+                Assert.That(c.State, Is.EqualTo(CalibrationState.WaitingForTPose), $"device {id}");
+                Assert.That(c.LastStep.Outcome, Is.EqualTo(CalibrationStepOutcome.PressIgnored));
+                Assert.That(c.LastStep.Explanation, Does.Contain("only a controller's trigger"));
+            }
+        }
+
+        [Test]
+        public void ASettingAcceptsPressesFromAnyDevice()
+        {
+            Calibrator c = Run(i => i == 89 ? new[] { Press(4) } : None, 100, new CalibrationSettings { AcceptTriggerFromAnyDevice = true });
+            Assert.That(c.State, Is.EqualTo(CalibrationState.WalkIn), c.LastStep.ToString());
+        }
+
+        [Test]
+        public void APressFromAnUnknownDeviceIsIgnored()
+        {
+            Calibrator c = Run(i => i == 89 ? new[] { Press(42) } : None, 100);
+            Assert.That(c.State, Is.EqualTo(CalibrationState.WaitingForTPose));
+            Assert.That(c.LastStep.Explanation, Does.Contain("unknown device id 42"));
+        }
+
+        [Test]
+        public void AnUntrackedHmdIsNamedWhateverTheDeviceOrder()
+        {
+            // Every rotation of the device list: the HMD first, last, and everywhere between.
+            for (int shift = 0; shift < 6; shift++)
+            {
+                Calibrator c = Run(i => i == 89 ? new[] { Press(1) } : None, 90,
+                    devices: w => { var d = new DeviceInfo[6]; for (int k = 0; k < 6; k++) d[k] = w.Devices[(k + shift) % 6]; return d; },
+                    samples: s => s[Array.IndexOf(Wearer.TrueRoles, DeviceRole.Head)] = DeviceSample.Lost);
+                Assert.That(c.LastStep.Error, Is.EqualTo(CalibrationError.DeviceNotTracked), $"shift {shift}");
+                Assert.That(c.LastStep.Message, Does.Contain("headset"), $"shift {shift}");
+            }
+        }
+
+        [Test]
+        public void WaitingFramesRepeatTheLastMessage()
+        {
+            Calibrator c = Run(i => i == 89 ? new[] { Press(1) } : None, 95, samples: s => s[Array.IndexOf(Wearer.TrueRoles, DeviceRole.Head)] = DeviceSample.Lost);
+            CalibrationStep waiting = c.Update(2.0, new DeviceSample[6], null);
+            Assert.That(waiting.Outcome, Is.EqualTo(CalibrationStepOutcome.Waiting));
+            Assert.That(waiting.Error, Is.EqualTo(CalibrationError.DeviceNotTracked), "the refusal is still what the wearer is told");
+        }
+    }
+}
