@@ -38,5 +38,8 @@ namespace AvatarGo.Simulation
 
         /// <summary>Frames in which a hand could not reach its controller.</summary>
         public int UnreachedHandFrames { get; internal set; }
+
+        /// <summary>The fingers on the solved body, when the avatar has finger bones and the hands a controller profile; else null.</summary>
+        public FingerReport Fingers { get; internal set; }
     }
 }

@@ -5,9 +5,10 @@ using AvatarGo.Core;
 namespace AvatarGo.Simulation
 {
     /// <summary>
-    /// Replays a synthetic session through calibration, the body solver and the IK, and compares the avatar with
-    /// the ground truth on every frame after calibration (positions per joint and group, end-effector rotations,
-    /// knee angles). The avatar is the wearer's own skeleton from the session header unless another is given.
+    /// Replays a synthetic session through the <see cref="SelfAvatarPipeline"/> (calibration, body solve, hands and fingers)
+    /// and compares the avatar with the ground truth on every frame after calibration: positions per joint and group,
+    /// end-effector rotations, knee angles, and the fingers on the controllers. The avatar is the wearer's own skeleton
+    /// from the session header unless another is given.
     /// </summary>
     public static class SessionEvaluator
     {
@@ -17,53 +18,50 @@ namespace AvatarGo.Simulation
         private static readonly HumanoidBone[] MidJoints =
             { HumanoidBone.LeftLowerArm, HumanoidBone.RightLowerArm, HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg };
 
-        /// <summary>Evaluates one offset mode over the session read by <paramref name="reader"/> (consumed to its end).</summary>
+        /// <summary>Evaluates one offset mode, without finger IK (see the other overload for settings).</summary>
+        public static EvaluationReport Evaluate(SessionReader reader, OffsetMode mode, HumanoidMap avatar = null) =>
+            Evaluate(reader, new PipelineSettings { Offsets = mode }, avatar);
+
+        /// <summary>Evaluates the session read by <paramref name="reader"/> (consumed to its end) with these pipeline settings.</summary>
         /// <param name="reader">A session with ground truth.</param>
-        /// <param name="mode">Exact offsets or the fixed baseline.</param>
+        /// <param name="settings">Offset mode, controllers and grip of each hand, calibration thresholds.</param>
         /// <param name="avatar">The avatar; null uses the wearer's skeleton from the header.</param>
-        /// <param name="onFrame">Optional: called with each solved avatar pose after calibration (for writing it out).</param>
-        /// <exception cref="ArgumentException">The session has no ground truth.</exception>
-        public static EvaluationReport Evaluate(SessionReader reader, OffsetMode mode, HumanoidMap avatar = null, Action<SkeletonPose> onFrame = null)
+        /// <param name="onFrame">Optional: called after each solved frame after calibration (to write the pose out, for example).</param>
+        /// <exception cref="ArgumentException">The session has no ground truth and no avatar is given.</exception>
+        public static EvaluationReport Evaluate(SessionReader reader, PipelineSettings settings, HumanoidMap avatar = null, Action<SelfAvatarPipeline> onFrame = null)
         {
             if (reader == null) throw new ArgumentNullException(nameof(reader));
+            if (settings == null) throw new ArgumentNullException(nameof(settings));
             SessionHeader header = reader.Header;
             avatar = avatar ?? header.TruthHumanoid ?? throw new ArgumentException("The session has no ground-truth skeleton; give an avatar.", nameof(reader));
-            var report = new EvaluationReport { Mode = mode };
-            var calibrator = new Calibrator(header.Devices, avatar);
+            var report = new EvaluationReport { Mode = settings.Offsets };
+            var pipeline = new SelfAvatarPipeline(header.Devices, avatar, settings);
             SessionFrame frame = reader.CreateFrame();
-            BodyTargetMapper solver = null;
-            FullBodyIk ik = null;
-            SkeletonPose pose = null;
-            var targets = new BodyTargets();
             var truthAtCalibration = new RigidPose[HumanoidBones.Count];
             var avatarAtCalibration = new RigidPose[HumanoidBones.Count];
-            HumanoidMap scaled = null;
+            bool calibrated = false;
 
             while (reader.ReadFrame(frame))
             {
-                if (solver == null)
+                pipeline.Update(frame);
+                if (pipeline.State != CalibrationState.Calibrated) continue;
+                HumanoidMap scaled = pipeline.ScaledAvatar;
+                if (!calibrated)
                 {
-                    calibrator.Update(frame.Time, frame.Samples, frame.Events);
-                    if (calibrator.State != CalibrationState.Calibrated) continue;
-                    CalibrationProfile profile = mode == OffsetMode.Exact ? calibrator.Profile : calibrator.Profile.WithFixedOffsets();
-                    report.Profile = profile;
-                    scaled = calibrator.ScaledAvatar;
-                    solver = new BodyTargetMapper(profile, header.Devices, scaled, calibrator.AvatarPose);
-                    ik = new FullBodyIk(scaled, calibrator.AvatarPose);
-                    pose = new SkeletonPose(scaled.Skeleton);
-                    pose.CopyFrom(calibrator.AvatarPose);
+                    // The frame that completed calibration: the references for the rotation errors.
+                    calibrated = true;
+                    report.Profile = pipeline.ActiveProfile;
                     for (int b = 0; b < HumanoidBones.Count; b++)
                     {
                         truthAtCalibration[b] = frame.Truth[b];
-                        if (scaled.Has((HumanoidBone)b)) avatarAtCalibration[b] = calibrator.AvatarPose.World[scaled[(HumanoidBone)b]];
+                        if (scaled.Has((HumanoidBone)b)) avatarAtCalibration[b] = pipeline.Pose.World[scaled[(HumanoidBone)b]];
                     }
+                    if (pipeline.Hand(BodySide.Left).HasFingerIk || pipeline.Hand(BodySide.Right).HasFingerIk) report.Fingers = new FingerReport();
                     continue;
                 }
-
-                solver.Compute(frame.Samples, ref targets);
-                IkReport ikReport = ik.Solve(in targets, pose);
-                if (!ikReport.LeftHand.Reached || !ikReport.RightHand.Reached) report.UnreachedHandFrames++;
-                onFrame?.Invoke(pose);
+                SkeletonPose pose = pipeline.Pose;
+                if (!pipeline.Hand(BodySide.Left).Reached || !pipeline.Hand(BodySide.Right).Reached) report.UnreachedHandFrames++;
+                onFrame?.Invoke(pipeline);
                 report.Frames++;
                 for (int b = 0; b < HumanoidBones.Count; b++)
                 {
@@ -84,19 +82,45 @@ namespace AvatarGo.Simulation
                     }
                     if (Array.IndexOf(MidJoints, bone) >= 0) report.MidJointMm.Add(mm);
                 }
-                foreach (bool left in new[] { true, false })
+                foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
                 {
-                    HumanoidBone hip = left ? HumanoidBone.LeftUpperLeg : HumanoidBone.RightUpperLeg;
-                    HumanoidBone knee = left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg;
-                    HumanoidBone ankle = left ? HumanoidBone.LeftFoot : HumanoidBone.RightFoot;
+                    HumanoidBone hip = HumanoidBones.OnSide(HumanoidBone.LeftUpperLeg, side);
+                    HumanoidBone knee = HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, side);
+                    HumanoidBone ankle = HumanoidBones.OnSide(HumanoidBone.LeftFoot, side);
                     if (!frame.HasTruth[(int)hip] || !frame.HasTruth[(int)knee] || !frame.HasTruth[(int)ankle]) continue;
                     double avatarAngle = KneeAngle(pose.World[scaled[hip]].Position, pose.World[scaled[knee]].Position, pose.World[scaled[ankle]].Position);
                     double truthAngle = KneeAngle(frame.Truth[(int)hip].Position, frame.Truth[(int)knee].Position, frame.Truth[(int)ankle].Position);
                     report.KneeAngleDegrees.Add(Math.Abs(avatarAngle - truthAngle));
                 }
+                if (report.Fingers != null) MeasureFingers(pipeline, report.Fingers);
             }
-            if (solver == null) report.CalibrationMessage = calibrator.LastStep.Message;
+            if (!calibrated) report.CalibrationMessage = pipeline.LastCalibrationStep.Message;
             return report;
+        }
+
+        private static void MeasureFingers(SelfAvatarPipeline pipeline, FingerReport fingers)
+        {
+            bool any = false;
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+            {
+                HandState hand = pipeline.Hand(side);
+                if (!hand.HasFingerIk) continue;
+                any = true;
+                if (!hand.Holding)
+                {
+                    fingers.OpenHandFrames++;
+                    continue;
+                }
+                for (Finger f = Finger.Thumb; f <= Finger.Little; f++)
+                {
+                    float tip = hand.SurfaceGap(f, FingerPoint.Tip);
+                    if (float.IsNaN(tip)) continue; // a finger the rig lacks
+                    for (FingerPoint p = FingerPoint.IntermediateJoint; p <= FingerPoint.Tip; p++)
+                        fingers.MaxPenetrationMm = Math.Max(fingers.MaxPenetrationMm, -hand.SurfaceGap(f, p) * 1000.0);
+                    fingers.Gap(f).Add(Math.Abs(tip) * 1000.0); // a tip inside the surface is off it too
+                }
+            }
+            if (any) fingers.Frames++;
         }
 
         private static double KneeAngle(Vector3 hip, Vector3 knee, Vector3 ankle) => Vectors.AngleDegrees(hip - knee, ankle - knee);

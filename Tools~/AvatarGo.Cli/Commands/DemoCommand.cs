@@ -45,8 +45,8 @@ public sealed class DemoCommand : ICommand
             var solved = new List<RigidPose[]>();
             EvaluationReport exact, fixedOffsets;
             using (SessionReader reader = SessionReader.Open(session))
-                exact = SessionEvaluator.Evaluate(reader, OffsetMode.Exact, null,
-                    outBvh == null ? null : pose => solved.Add((RigidPose[])pose.Local.Clone()));
+                exact = SessionEvaluator.Evaluate(reader, new PipelineSettings { Offsets = OffsetMode.Exact }, null,
+                    outBvh == null ? null : pipeline => solved.Add((RigidPose[])pipeline.Pose.Local.Clone()));
             progress.Report("solving", 2f / 3);
             using (SessionReader reader = SessionReader.Open(session))
                 fixedOffsets = SessionEvaluator.Evaluate(reader, OffsetMode.Fixed);

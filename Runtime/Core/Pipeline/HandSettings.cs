@@ -1,0 +1,21 @@
+namespace AvatarGo.Core
+{
+    /// <summary>How one hand of the avatar holds its controller (a part of <see cref="PipelineSettings"/>).</summary>
+    public sealed class HandSettings
+    {
+        /// <summary>
+        /// The controller held in this hand, whose surface the fingers close on; null for no finger IK (the fingers keep
+        /// the avatar's rest pose). An avatar without finger bones has no finger IK either (<see cref="HandModel.CanModel"/>).
+        /// </summary>
+        public ControllerProfile Controller { get; set; }
+
+        /// <summary>What the fingers do: hold the controller (the default, as the paper's avatar always does), open, point, or follow the trigger and grip.</summary>
+        public GripMode Grip { get; set; } = GripMode.Hold;
+
+        /// <summary>
+        /// Seconds the drawn controller takes to move between the tracked pose and the hand when the arm stops or starts
+        /// reaching it (0.15 s): no jump when the hand comes back within reach.
+        /// </summary>
+        public float ControllerBlendSeconds { get; set; } = 0.15f;
+    }
+}

@@ -1,0 +1,32 @@
+using System;
+
+namespace AvatarGo.Core
+{
+    /// <summary>Settings of a <see cref="SelfAvatarPipeline"/>: calibration thresholds, the offset mode and each hand's controller and grip.</summary>
+    public sealed class PipelineSettings
+    {
+        private CalibrationSettings _calibration = new CalibrationSettings();
+
+        /// <summary>The calibration's thresholds (stillness window, floor, which presses count).</summary>
+        public CalibrationSettings Calibration
+        {
+            get => _calibration;
+            set => _calibration = value ?? throw new ArgumentNullException(nameof(value));
+        }
+
+        /// <summary>
+        /// Exact offsets (the paper's method, the default) or the fixed-offset baseline; read when calibration completes
+        /// or a profile is restored.
+        /// </summary>
+        public OffsetMode Offsets { get; set; } = OffsetMode.Exact;
+
+        /// <summary>The left hand's controller and grip.</summary>
+        public HandSettings LeftHand { get; } = new HandSettings();
+
+        /// <summary>The right hand's controller and grip.</summary>
+        public HandSettings RightHand { get; } = new HandSettings();
+
+        /// <summary>The settings of one hand.</summary>
+        public HandSettings Hand(BodySide side) => side == BodySide.Left ? LeftHand : RightHand;
+    }
+}

@@ -1,0 +1,265 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// The whole system in one object: device samples, analog inputs and trigger events in; the calibration's state and
+    /// the avatar's solved pose (body and fingers) out. Until calibrated it runs the Walk-In-Avatar
+    /// <see cref="Calibrator"/> (or takes a saved profile, <see cref="TryRestore"/>); from then on every frame maps the
+    /// devices to targets with the exact offsets (<see cref="BodyTargetMapper"/>), solves the body
+    /// (<see cref="FullBodyIk"/>), puts each hand on its controller and closes its fingers on the controller's surface
+    /// (<see cref="FingerSolver"/>). Unity components call <see cref="Update(double, ReadOnlySpan{DeviceSample}, ReadOnlySpan{float}, ReadOnlySpan{float}, IReadOnlyList{DeviceEvent})"/>
+    /// once a frame and copy <see cref="Pose"/> to the avatar.
+    /// </summary>
+    /// <remarks>
+    /// <para>Hands: the wrist's goal is the controller's pose times the calibrated controller-to-wrist offset (the wearer's
+    /// palm on the avatar's palm at the walk-in: the paper's exact palm offset). Where the arm cannot reach, the hand goes as
+    /// far as it can and the virtual controller is drawn in the hand, in the same grip (<see cref="HandState.ControllerPose"/>),
+    /// sliding back to the tracked pose over <see cref="HandSettings.ControllerBlendSeconds"/> when the hand reaches again;
+    /// the fingers close on the controller where it is drawn.</para>
+    /// <para>Per frame after calibration: nothing is allocated, nothing throws on bad samples (NaN, non-unit quaternions,
+    /// lost tracking: the affected part keeps its last pose), the output is finite (a frame that would not be is replaced by
+    /// the last good one), and nothing depends on the frame rate but the controller's blend, which uses the frames' times.
+    /// Trigger presses after calibration are left to the application.</para>
+    /// </remarks>
+    public sealed class SelfAvatarPipeline
+    {
+        private readonly DeviceInfo[] _devices;
+        private readonly Calibrator _calibrator;
+        private readonly HandState[] _handStates = { new HandState(BodySide.Left), new HandState(BodySide.Right) };
+        private readonly HandModel[] _hands = new HandModel[2];
+        private readonly FingerSolver[] _fingers = new FingerSolver[2];
+        private readonly RigidPose[] _controllerInWrist = new RigidPose[2];
+        private BodyTargetMapper _mapper;
+        private FullBodyIk _ik;
+        private SkeletonPose _pose, _lastGood;
+        private BodyTargets _targets;
+        private IkReport _report;
+        private double _lastTime = double.NaN;
+
+        /// <summary>Creates the pipeline for these devices (in the order every frame's samples come) and this avatar.</summary>
+        /// <exception cref="ArgumentException">The avatar lacks a required humanoid bone, or two devices share an id.</exception>
+        public SelfAvatarPipeline(IReadOnlyList<DeviceInfo> devices, HumanoidMap avatar, PipelineSettings settings = null)
+        {
+            if (devices == null) throw new ArgumentNullException(nameof(devices));
+            Avatar = avatar ?? throw new ArgumentNullException(nameof(avatar));
+            Settings = settings ?? new PipelineSettings();
+            _devices = new DeviceInfo[devices.Count];
+            for (int i = 0; i < _devices.Length; i++) _devices[i] = devices[i];
+            _calibrator = new Calibrator(_devices, avatar, Settings.Calibration);
+        }
+
+        /// <summary>The settings. Grip modes are read every frame; controllers and the offset mode when calibration completes
+        /// (or at <see cref="ApplyHandSettings"/>).</summary>
+        public PipelineSettings Settings { get; }
+
+        /// <summary>The devices, in sample order.</summary>
+        public IReadOnlyList<DeviceInfo> Devices => _devices;
+
+        /// <summary>The avatar as given (unscaled).</summary>
+        public HumanoidMap Avatar { get; }
+
+        /// <summary>The avatar scaled to the wearer, once the T-pose step has run (else null); <see cref="Pose"/> belongs to it.</summary>
+        public HumanoidMap ScaledAvatar => _calibrator.ScaledAvatar;
+
+        /// <summary>The calibration's state.</summary>
+        public CalibrationState State => _calibrator.State;
+
+        /// <summary>The last calibration step that did something (its message is what the wearer should be told).</summary>
+        public CalibrationStep LastCalibrationStep => _calibrator.LastStep;
+
+        /// <summary>The measured calibration (exact offsets, what to save), once calibrated or restored; during the walk-in its scale and placement.</summary>
+        public CalibrationProfile Profile => _calibrator.Profile;
+
+        /// <summary>The calibration the body is driven with: <see cref="Profile"/>, or its fixed-offset baseline (<see cref="PipelineSettings.Offsets"/>).</summary>
+        public CalibrationProfile ActiveProfile { get; private set; }
+
+        /// <summary>The index (in <see cref="Devices"/>) of the device playing <paramref name="role"/>, or -1 before identification.</summary>
+        public int DeviceIndexOf(DeviceRole role) => _calibrator.DeviceIndexOf(role);
+
+        /// <summary>
+        /// The avatar's pose, world and local, of <see cref="ScaledAvatar"/>'s skeleton: null before the T-pose step; the
+        /// scaled avatar standing in T-pose where the wearer stood during the walk-in (what the mirror shows); the solved
+        /// pose, fingers included, once calibrated. A new object after each calibration.
+        /// </summary>
+        public SkeletonPose Pose => _pose ?? _calibrator.AvatarPose;
+
+        /// <summary>This frame's targets (root, head, spine bend, limb goals and knee/elbow hints), once calibrated.</summary>
+        public BodyTargets Targets => _targets;
+
+        /// <summary>What the body IK achieved this frame, per limb.</summary>
+        public IkReport Ik => _report;
+
+        /// <summary>One hand's state after this frame: reach, where to draw its controller, its fingers.</summary>
+        public HandState Hand(BodySide side) => _handStates[(int)side];
+
+        /// <summary>
+        /// Runs one frame. <paramref name="samples"/>: every device's sample, in <see cref="Devices"/> order.
+        /// <paramref name="trigger"/> and <paramref name="grip"/>: each device's analog values 0..1 (NaN: not given), or empty
+        /// spans when there are none. <paramref name="events"/>: this frame's trigger events, or null. Returns the
+        /// calibration's result for this frame. Allocation-free once calibrated.
+        /// </summary>
+        /// <exception cref="ArgumentException">A span's length is not the number of devices (a programming error, not bad data).</exception>
+        public CalibrationStep Update(double time, ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip, IReadOnlyList<DeviceEvent> events)
+        {
+            if (samples.Length != _devices.Length) throw new ArgumentException($"Expected {_devices.Length} samples, got {samples.Length}.", nameof(samples));
+            if (trigger.Length != 0 && trigger.Length != _devices.Length) throw new ArgumentException($"Expected {_devices.Length} trigger values or none, got {trigger.Length}.", nameof(trigger));
+            if (grip.Length != 0 && grip.Length != _devices.Length) throw new ArgumentException($"Expected {_devices.Length} grip values or none, got {grip.Length}.", nameof(grip));
+            float dt = !double.IsNaN(_lastTime) && time > _lastTime ? (float)Math.Min(time - _lastTime, 0.25) : 0f;
+            _lastTime = time;
+            if (_mapper == null)
+            {
+                CalibrationStep step = _calibrator.Update(time, samples, events);
+                if (State == CalibrationState.Calibrated) Setup(); // solving starts with the next frame
+                return step;
+            }
+            Solve(dt, samples, trigger, grip);
+            CalibrationStep last = _calibrator.LastStep;
+            return new CalibrationStep(State, CalibrationStepOutcome.Waiting, last.Error, last.Message, null);
+        }
+
+        /// <summary>Runs one frame of a recorded or synthetic session (its samples, analog inputs and events).</summary>
+        public CalibrationStep Update(SessionFrame frame)
+        {
+            if (frame == null) throw new ArgumentNullException(nameof(frame));
+            return Update(frame.Time, frame.Samples, frame.Trigger, frame.Grip, frame.Events);
+        }
+
+        /// <summary>
+        /// Takes a saved calibration instead of calibrating, when the same devices are worn (matched by serial): solving
+        /// starts with the next frame. False, with nothing changed, when a device of the profile is not connected.
+        /// </summary>
+        public bool TryRestore(CalibrationProfile profile)
+        {
+            if (!_calibrator.TryRestore(profile)) return false;
+            Setup();
+            return true;
+        }
+
+        /// <summary>Back to the T-pose step (cancel or redo the calibration).</summary>
+        public void Reset()
+        {
+            _calibrator.Reset();
+            _mapper = null;
+            _ik = null;
+            _pose = _lastGood = null;
+            ActiveProfile = null;
+            _targets = default;
+            _report = default;
+            for (int s = 0; s < 2; s++)
+            {
+                _hands[s] = null;
+                _fingers[s] = null;
+                _handStates[s].Solver = null;
+                _handStates[s].Fingers.Clear();
+            }
+        }
+
+        /// <summary>Applies the hands' <see cref="HandSettings.Controller"/> now (builds the finger solvers: allocates, about 1 ms per hand).</summary>
+        public void ApplyHandSettings()
+        {
+            if (_pose == null) return;
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right }) SetUpFingers(side);
+        }
+
+        // ---- Setup, once per calibration ----------------------------------------------------------------------
+
+        private void Setup()
+        {
+            CalibrationProfile measured = _calibrator.Profile;
+            ActiveProfile = Settings.Offsets == OffsetMode.Fixed ? measured.WithFixedOffsets() : measured;
+            HumanoidMap scaled = _calibrator.ScaledAvatar;
+            SkeletonPose calibrationPose = _calibrator.AvatarPose;
+            _mapper = new BodyTargetMapper(ActiveProfile, _devices, scaled, calibrationPose);
+            _ik = new FullBodyIk(scaled, calibrationPose);
+            _pose = new SkeletonPose(scaled.Skeleton);
+            _pose.CopyFrom(calibrationPose);
+            _lastGood = new SkeletonPose(scaled.Skeleton);
+            _lastGood.CopyFrom(calibrationPose);
+            _targets = default;
+            _report = default;
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+            {
+                int s = (int)side;
+                _controllerInWrist[s] = ActiveProfile.JointInDevice(BodyRoles.Hand(side)).Inverse();
+                HandState state = _handStates[s];
+                state.ControllerPose = _pose.World[scaled[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]] * _controllerInWrist[s];
+                state.AttachedToHand = 0f;
+                SetUpFingers(side);
+            }
+        }
+
+        private void SetUpFingers(BodySide side)
+        {
+            int s = (int)side;
+            HandState state = _handStates[s];
+            ControllerProfile controller = Settings.Hand(side).Controller;
+            _hands[s] = null;
+            _fingers[s] = null;
+            state.Fingers.Clear();
+            state.Holding = false;
+            if (controller == null) state.NoFingerIkReason = "no controller profile is set for this hand";
+            else if (HandModel.CanModel(_calibrator.ScaledAvatar, side, out string reason))
+            {
+                _hands[s] = new HandModel(_calibrator.ScaledAvatar, side);
+                _fingers[s] = new FingerSolver(_hands[s], controller);
+                state.NoFingerIkReason = null;
+            }
+            else state.NoFingerIkReason = reason;
+            state.HasFingerIk = _fingers[s] != null;
+            state.Solver = _fingers[s];
+        }
+
+        // ---- Every frame once calibrated ----------------------------------------------------------------------
+
+        private void Solve(float dt, ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip)
+        {
+            _mapper.Compute(samples, ref _targets);
+            _report = _ik.Solve(in _targets, _pose);
+            PlaceHand(BodySide.Left, in _targets.LeftHand, _report.LeftHand, dt, samples, trigger, grip);
+            PlaceHand(BodySide.Right, in _targets.RightHand, _report.RightHand, dt, samples, trigger, grip);
+            _pose.UpdateWorld();
+            if (IsFinite(_pose)) _lastGood.CopyFrom(_pose);
+            else _pose.CopyFrom(_lastGood); // never a NaN on a bone: keep the last good frame
+        }
+
+        // Where the controller is drawn (tracked, or in the hand where the arm cannot reach), then the fingers on it.
+        private void PlaceHand(BodySide side, in LimbTarget target, LimbResult reach, float dt, ReadOnlySpan<DeviceSample> samples,
+            ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip)
+        {
+            int s = (int)side;
+            HandState state = _handStates[s];
+            HumanoidMap avatar = _calibrator.ScaledAvatar;
+            RigidPose wrist = _pose.World[avatar[side == BodySide.Left ? HumanoidBone.LeftHand : HumanoidBone.RightHand]];
+            RigidPose inHand = wrist * _controllerInWrist[s];
+            int device = _calibrator.DeviceIndexOf(BodyRoles.Hand(side));
+            state.ControllerTracked = target.IsActive;
+            state.Reached = target.IsActive && reach.Reached;
+            state.DistanceLeft = target.IsActive ? reach.DistanceLeft : 0f;
+            HandSettings settings = Settings.Hand(side);
+            float step = settings.ControllerBlendSeconds > 0f ? dt / settings.ControllerBlendSeconds : 1f;
+            float wanted = state.Reached ? 0f : 1f;
+            state.AttachedToHand = state.AttachedToHand < wanted ? Math.Min(wanted, state.AttachedToHand + step) : Math.Max(wanted, state.AttachedToHand - step);
+            state.ControllerPose = target.IsActive ? RigidPose.Lerp(samples[device].Pose, inHand, state.AttachedToHand) : inHand;
+
+            FingerSolver fingers = _fingers[s];
+            if (fingers == null) return;
+            float triggerValue = trigger.Length > 0 ? trigger[device] : float.NaN;
+            float gripValue = grip.Length > 0 ? grip[device] : float.NaN;
+            fingers.Solve(wrist, state.ControllerPose, settings.Grip, triggerValue, gripValue);
+            state.Fingers.CopyFrom(fingers.Parameters);
+            state.Holding = !fingers.OutOfReach && settings.Grip != GripMode.Open;
+            _hands[s].Apply(fingers.Parameters, _pose);
+        }
+
+        private static bool IsFinite(SkeletonPose pose)
+        {
+            RigidPose[] world = pose.World;
+            for (int j = 0; j < world.Length; j++)
+                if (!Vectors.IsFinite(world[j].Position) || !Rotations.IsFinite(world[j].Rotation)) return false;
+            return true;
+        }
+    }
+}
