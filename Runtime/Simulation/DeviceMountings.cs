@@ -5,18 +5,20 @@ using AvatarGo.Core;
 namespace AvatarGo.Simulation
 {
     /// <summary>
-    /// Where each of the six devices sits on the body: per role, the device pose relative to its joint,
-    /// expressed in the body frame of the canonical T-pose (x right, y up, z forward; see <see cref="TPoser"/>).
-    /// The HMD's reference point is the eyes (the runtime reports the centre-eye pose), the controllers' the
-    /// wrist, the pelvis tracker's the hips joint, the foot trackers' the ankles.
+    /// Where each of the six devices sits on the body. For the HMD and the trackers: the device pose relative to its
+    /// joint, expressed in the body frame of the canonical T-pose (x right, y up, z forward; see <see cref="TPoser"/>);
+    /// the HMD's reference point is the eyes (the runtime reports the centre-eye pose), the pelvis tracker's the hips
+    /// joint, the foot trackers' the ankles. For the controllers: the controller's pose relative to where a hand holds it
+    /// (<see cref="HandModel.GripPose"/>: the handle across the palm, the palm centre on the grip), in that grip's frame.
     /// </summary>
     /// <remarks>
-    /// Defaults (a 1.75 m adult): HMD at the centre eye; controller grip centre 7 cm along the hand from the
-    /// wrist and 4 cm below the palm line (inside the closed fist); pelvis tracker on the lower back, 12 cm
-    /// behind and 3 cm above the hips joint (belt strap over the sacrum); foot trackers on the instep, 8 cm in
-    /// front of and 2 cm above the ankle joint. <see cref="Sample"/> varies each position by up to ±2 cm
-    /// (±3 mm for the HMD, whose optics fix it to the eyes) and draws every device rotation uniformly
-    /// (the HMD: within ±5° of level), because a strap never sits twice in the same place.
+    /// Defaults (a 1.75 m adult): HMD at the centre eye; controllers held in the palm; pelvis tracker on the lower back,
+    /// 12 cm behind and 3 cm above the hips joint (belt strap over the sacrum); foot trackers on the instep, 8 cm in
+    /// front of and 2 cm above the ankle joint. <see cref="Sample"/> varies each tracker's position by up to ±2 cm
+    /// (±3 mm for the HMD, whose optics fix it to the eyes) and draws its rotation uniformly (the HMD: within ±5° of
+    /// level), because a strap never sits twice in the same place; a controller's grip varies by up to ±4 mm and ±4° about each axis: its
+    /// shape decides how it is held (the handle in the palm's crease, the index on the trigger), so people and holds differ
+    /// by millimetres and degrees, not centimetres (an assumption, not a measurement).
     /// </remarks>
     public sealed class DeviceMountings
     {
@@ -38,8 +40,8 @@ namespace AvatarGo.Simulation
         {
             var m = new DeviceMountings();
             m[DeviceRole.Head] = RigidPose.Identity;
-            m[DeviceRole.LeftHand] = RigidPose.FromPosition(new Vector3(-0.07f, -0.04f, 0f));
-            m[DeviceRole.RightHand] = RigidPose.FromPosition(new Vector3(0.07f, -0.04f, 0f));
+            m[DeviceRole.LeftHand] = RigidPose.Identity;
+            m[DeviceRole.RightHand] = RigidPose.Identity;
             m[DeviceRole.Pelvis] = RigidPose.FromPosition(new Vector3(0f, 0.03f, -0.12f));
             m[DeviceRole.LeftFoot] = RigidPose.FromPosition(new Vector3(0f, 0.02f, 0.08f));
             m[DeviceRole.RightFoot] = RigidPose.FromPosition(new Vector3(0f, 0.02f, 0.08f));
@@ -53,12 +55,14 @@ namespace AvatarGo.Simulation
             DeviceMountings m = Default();
             foreach (DeviceRole role in BodyRoles.All)
             {
-                bool hmd = role == DeviceRole.Head;
-                float range = hmd ? 0.003f : 0.02f;
+                bool hmd = role == DeviceRole.Head, hand = role == DeviceRole.LeftHand || role == DeviceRole.RightHand;
+                float range = hmd ? 0.003f : hand ? 0.004f : 0.02f;
                 Vector3 p = m[role].Position + new Vector3(Uniform(rng, range), Uniform(rng, range), Uniform(rng, range));
                 Quaternion q = hmd
                     ? Rotations.AngleAxis(Uniform(rng, 5f), Vector3.UnitX) * Rotations.AngleAxis(Uniform(rng, 5f), Vector3.UnitZ)
-                    : UniformRotation(rng);
+                    : hand
+                        ? Rotations.AngleAxis(Uniform(rng, 4f), Vector3.UnitX) * Rotations.AngleAxis(Uniform(rng, 4f), Vector3.UnitY) * Rotations.AngleAxis(Uniform(rng, 4f), Vector3.UnitZ)
+                        : UniformRotation(rng);
                 m[role] = new RigidPose(p, q);
             }
             return m;

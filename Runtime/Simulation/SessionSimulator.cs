@@ -58,7 +58,7 @@ namespace AvatarGo.Simulation
             Skeleton s = _map.Skeleton;
             var rng = new Random(_options.Seed);
             DeviceMountings mountings = _options.Mountings ?? DeviceMountings.Sample(rng);
-            var rig = new VirtualDeviceRig(_map, mountings);
+            var rig = new VirtualDeviceRig(_map, mountings, _options.Controller);
             DeviceInfo[] devices = Devices();
             var calibrator = new Calibrator(devices, _map);
             var frame = new SessionFrame(writer.Header);

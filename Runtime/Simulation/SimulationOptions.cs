@@ -22,6 +22,12 @@ namespace AvatarGo.Simulation
         public DeviceMountings Mountings { get; set; }
 
         /// <summary>
+        /// The controller the wearer holds in both hands (its handle's radius decides where it sits in the palm); null for a
+        /// generic handle of <see cref="VirtualDeviceRig.DefaultHandleRadius"/>. Evaluate with the same profile.
+        /// </summary>
+        public ControllerProfile Controller { get; set; }
+
+        /// <summary>
         /// How far from the shown avatar the wearer ends the walk-in, in the avatar's frame (x right, y up, z forward),
         /// in metres (none: a perfect walk-in).
         /// </summary>

@@ -14,11 +14,17 @@ namespace AvatarGo.Simulation
         private readonly int[] _joints = new int[BodyRoles.All.Length];
         private readonly RigidPose[] _deviceInJoint = new RigidPose[BodyRoles.All.Length];
 
+        /// <summary>Handle radius (m) of the controller held when none is given: 2 cm, a typical grip.</summary>
+        public const float DefaultHandleRadius = 0.02f;
+
         /// <summary>
         /// Builds the rig for the wearer's skeleton: the mountings (given in the T-pose body frame) are converted
-        /// once into each joint's own frame using the wearer's canonical T-pose.
+        /// once into each joint's own frame using the wearer's canonical T-pose. Controllers are held in the palm: the
+        /// grip of <paramref name="controller"/> (or of a handle of <see cref="DefaultHandleRadius"/>) on the palm that the
+        /// finger bones give (<see cref="HandModel"/>), or, for a hand without finger bones, on a palm estimated from the
+        /// forearm (its length 0.36 of the forearm's, the palm facing down in the T-pose).
         /// </summary>
-        public VirtualDeviceRig(HumanoidMap wearer, DeviceMountings mountings)
+        public VirtualDeviceRig(HumanoidMap wearer, DeviceMountings mountings, ControllerProfile controller = null)
         {
             Wearer = wearer ?? throw new ArgumentNullException(nameof(wearer));
             Mountings = mountings ?? throw new ArgumentNullException(nameof(mountings));
@@ -31,10 +37,37 @@ namespace AvatarGo.Simulation
                 _joints[i] = wearer[bone];
                 RigidPose joint = tpose.World[_joints[i]];
                 RigidPose mount = mountings[role];
+                if (role == DeviceRole.LeftHand || role == DeviceRole.RightHand)
+                {
+                    BodySide side = role == DeviceRole.LeftHand ? BodySide.Left : BodySide.Right;
+                    _deviceInJoint[i] = GripInHand(wearer, tpose, side, controller) * mount;
+                    continue;
+                }
                 Vector3 reference = role == DeviceRole.Head ? TPoser.EyePosition(wearer, tpose, Quaternion.Identity) : joint.Position;
                 var device = new RigidPose(reference + mount.Position, mount.Rotation);
                 _deviceInJoint[i] = device.RelativeTo(joint);
             }
+        }
+
+        // Where the hand holds the controller, in the hand joint's frame.
+        private static RigidPose GripInHand(HumanoidMap wearer, SkeletonPose tpose, BodySide side, ControllerProfile controller)
+        {
+            float radius = controller != null ? -controller.Shape.Distance(Vector3.Zero) : DefaultHandleRadius;
+            if (HandModel.CanModel(wearer, side, out _))
+            {
+                var hand = new HandModel(wearer, side);
+                return HandModel.GripPose(hand.PalmCentreInHand, hand.PalmNormalInHand, hand.AcrossInHand, radius);
+            }
+            // No finger bones: the palm from the forearm, facing down in the T-pose, the thumb forward.
+            RigidPose wrist = tpose.World[wearer[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]];
+            Vector3 elbow = tpose.World[wearer[HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side)]].Position;
+            Vector3 along = Vectors.NormalizeOr(wrist.Position - elbow, side == BodySide.Left ? -Vector3.UnitX : Vector3.UnitX);
+            Vector3 normal = Vectors.NormalizeOr(Vectors.ProjectOnPlane(-Vector3.UnitY, along), -Vector3.UnitY);
+            Vector3 across = side == BodySide.Left ? Vector3.Cross(along, normal) : Vector3.Cross(normal, along);
+            float handLength = 0.36f * Vector3.Distance(wrist.Position, elbow);
+            float fingerRadius = 0.0085f * handLength / 0.095f;
+            Vector3 palmCentre = wrist.Position + along * (HandModel.GripAlongPalm * handLength) + normal * fingerRadius;
+            return wrist.Inverse() * HandModel.GripPose(palmCentre, normal, across, radius);
         }
 
         /// <summary>The wearer's skeleton and humanoid map.</summary>

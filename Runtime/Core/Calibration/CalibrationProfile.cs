@@ -125,6 +125,17 @@ namespace AvatarGo.Core
             return p;
         }
 
+        /// <summary>
+        /// A copy in which <paramref name="role"/>'s joint sits at <paramref name="jointInDevice"/> in its device's frame
+        /// instead of the measured offset (the pipeline's palm-on-controller hands). Its walk-in poses are kept.
+        /// </summary>
+        internal CalibrationProfile WithJointInDevice(DeviceRole role, RigidPose jointInDevice)
+        {
+            var p = new CalibrationProfile(this);
+            p._jointInDevice[role] = jointInDevice;
+            return p;
+        }
+
         /// <summary>Fixed-offset HMD → head joint translation in the HMD frame: 7 cm down and 9 cm back from the eyes (the inverse of <see cref="TPoser.HeadToEyes"/>).</summary>
         public static readonly Vector3 FixedHeadOffset = new Vector3(0f, -0.07f, -0.09f);
 

@@ -163,22 +163,31 @@ namespace AvatarGo.Core
         /// <summary>
         /// Where a controller sits in the hand joint's frame when held: its handle axis (+Y) across the palm toward
         /// the index, its trigger side (+Z) away from the palm, its origin one handle radius plus a finger radius
-        /// off the palm centre — the palm centre on the grip.
+        /// off the palm centre — the palm centre on the grip (<see cref="GripPose"/>).
         /// </summary>
         public RigidPose ControllerInHand(ControllerProfile profile)
         {
             if (profile == null) throw new ArgumentNullException(nameof(profile));
-            float radius = -profile.Shape.Distance(Vector3.Zero);
-            Vector3 up = AcrossInHand;
-            Vector3 forward = Vector3.Normalize(Vectors.ProjectOnPlane(PalmNormalInHand, up));
-            Vector3 origin = PalmCentreInHand + PalmNormalInHand * (radius + 0.002f);
-            return new RigidPose(origin, Rotations.LookRotation(forward, up));
+            return GripPose(PalmCentreInHand, PalmNormalInHand, AcrossInHand, -profile.Shape.Distance(Vector3.Zero));
+        }
+
+        /// <summary>
+        /// The pose of a controller held in a palm, in the frame the palm is given in: the handle's axis (the controller's
+        /// +Y) along <paramref name="across"/> (little finger to index), its trigger side (+Z) out of the palm, its origin
+        /// (on the handle's axis) <paramref name="handleRadius"/> and 2 mm of skin off <paramref name="palmCentre"/> along
+        /// <paramref name="palmNormal"/>. The one definition of a held controller, for hands with and without finger bones.
+        /// </summary>
+        public static RigidPose GripPose(Vector3 palmCentre, Vector3 palmNormal, Vector3 across, float handleRadius)
+        {
+            Vector3 forward = Vectors.NormalizeOr(Vectors.ProjectOnPlane(palmNormal, across), palmNormal);
+            return new RigidPose(palmCentre + palmNormal * (handleRadius + 0.002f), Rotations.LookRotation(forward, across));
         }
 
         /// <summary>
         /// The inverse of <see cref="ControllerInHand"/>: where the hand (wrist) joint sits in the controller's frame when
         /// it holds <paramref name="profile"/>. A tracked controller pose <c>c</c> puts the avatar's wrist at
-        /// <c>c * WristInController(profile)</c> (what calibration needs to place the wrist on the controller).
+        /// <c>c * WristInController(profile)</c>: the palm on the grip, the paper's placement of the hands
+        /// (<see cref="HandPlacement.PalmOnController"/>).
         /// </summary>
         public RigidPose WristInController(ControllerProfile profile) => ControllerInHand(profile).Inverse();
 

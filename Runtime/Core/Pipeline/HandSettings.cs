@@ -9,6 +9,9 @@ namespace AvatarGo.Core
         /// </summary>
         public ControllerProfile Controller { get; set; }
 
+        /// <summary>How the wrist is placed from the controller: the palm on the grip (the default, the paper's) or the walk-in's measured offset.</summary>
+        public HandPlacement Placement { get; set; } = HandPlacement.PalmOnController;
+
         /// <summary>What the fingers do: hold the controller (the default, as the paper's avatar always does), open, point, or follow the trigger and grip.</summary>
         public GripMode Grip { get; set; } = GripMode.Hold;
 

@@ -12,6 +12,9 @@ namespace AvatarGo.Core
         /// <summary>Which hand.</summary>
         public BodySide Side { get; }
 
+        /// <summary>How the wrist is placed from the controller (<see cref="HandPlacement.CalibratedOffset"/> when the hand has no finger IK).</summary>
+        public HandPlacement Placement { get; internal set; } = HandPlacement.CalibratedOffset;
+
         /// <summary>True when the controller was tracked this frame (otherwise the arm kept its last pose).</summary>
         public bool ControllerTracked { get; internal set; }
 

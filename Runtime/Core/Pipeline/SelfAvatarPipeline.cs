@@ -14,8 +14,10 @@ namespace AvatarGo.Core
     /// once a frame and copy <see cref="Pose"/> to the avatar.
     /// </summary>
     /// <remarks>
-    /// <para>Hands: the wrist's goal is the controller's pose times the calibrated controller-to-wrist offset (the wearer's
-    /// palm on the avatar's palm at the walk-in: the paper's exact palm offset). Where the arm cannot reach, the hand goes as
+    /// <para>Hands: the wrist's goal is the controller's pose times the palm's exact offset from the controller's grip
+    /// (<see cref="HandPlacement.PalmOnController"/>, the paper's: needs the hand's controller profile and finger bones),
+    /// or the controller-to-wrist offset measured at the walk-in (<see cref="HandPlacement.CalibratedOffset"/>, and for
+    /// hands without finger IK). Where the arm cannot reach, the hand goes as
     /// far as it can and the virtual controller is drawn in the hand, in the same grip (<see cref="HandState.ControllerPose"/>),
     /// sliding back to the tracked pose over <see cref="HandSettings.ControllerBlendSeconds"/> when the hand reaches again;
     /// the fingers close on the controller where it is drawn.</para>
@@ -157,11 +159,13 @@ namespace AvatarGo.Core
             }
         }
 
-        /// <summary>Applies the hands' <see cref="HandSettings.Controller"/> now (builds the finger solvers: allocates, about 1 ms per hand).</summary>
+        /// <summary>
+        /// Applies the hands' <see cref="HandSettings.Controller"/> and <see cref="HandSettings.Placement"/> (and the offset
+        /// mode) now instead of at the next calibration: builds the finger solvers (allocates, about 1 ms per hand).
+        /// </summary>
         public void ApplyHandSettings()
         {
-            if (_pose == null) return;
-            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right }) SetUpFingers(side);
+            if (_mapper != null) Setup();
         }
 
         // ---- Setup, once per calibration ----------------------------------------------------------------------
@@ -169,25 +173,33 @@ namespace AvatarGo.Core
         private void Setup()
         {
             CalibrationProfile measured = _calibrator.Profile;
-            ActiveProfile = Settings.Offsets == OffsetMode.Fixed ? measured.WithFixedOffsets() : measured;
             HumanoidMap scaled = _calibrator.ScaledAvatar;
             SkeletonPose calibrationPose = _calibrator.AvatarPose;
-            _mapper = new BodyTargetMapper(ActiveProfile, _devices, scaled, calibrationPose);
-            _ik = new FullBodyIk(scaled, calibrationPose);
             _pose = new SkeletonPose(scaled.Skeleton);
             _pose.CopyFrom(calibrationPose);
             _lastGood = new SkeletonPose(scaled.Skeleton);
             _lastGood.CopyFrom(calibrationPose);
             _targets = default;
             _report = default;
+            ActiveProfile = Settings.Offsets == OffsetMode.Fixed ? measured.WithFixedOffsets() : measured;
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+            {
+                SetUpFingers(side);
+                // The paper's hands: the palm on the controller's grip, where the hand has a model and a controller.
+                HandState state = _handStates[(int)side];
+                state.Placement = state.HasFingerIk && Settings.Hand(side).Placement == HandPlacement.PalmOnController
+                    ? HandPlacement.PalmOnController : HandPlacement.CalibratedOffset;
+                if (state.Placement == HandPlacement.PalmOnController)
+                    ActiveProfile = ActiveProfile.WithJointInDevice(BodyRoles.Hand(side), _hands[(int)side].WristInController(Settings.Hand(side).Controller));
+            }
+            _mapper = new BodyTargetMapper(ActiveProfile, _devices, scaled, calibrationPose);
+            _ik = new FullBodyIk(scaled, calibrationPose);
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {
                 int s = (int)side;
                 _controllerInWrist[s] = ActiveProfile.JointInDevice(BodyRoles.Hand(side)).Inverse();
-                HandState state = _handStates[s];
-                state.ControllerPose = _pose.World[scaled[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]] * _controllerInWrist[s];
-                state.AttachedToHand = 0f;
-                SetUpFingers(side);
+                _handStates[s].ControllerPose = _pose.World[scaled[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]] * _controllerInWrist[s];
+                _handStates[s].AttachedToHand = 0f;
             }
         }
 

@@ -43,10 +43,8 @@ public sealed class FingersCommand : ICommand
         bool json = a.Flag("json");
         a.ThrowOnUnknown(0);
 
-        string profilesDir = FindProfiles();
-        var profiles = Directory.GetFiles(profilesDir, "*.json").OrderBy(f => f, StringComparer.Ordinal)
-            .Select(f => ControllerProfile.Parse(File.ReadAllText(f))).Where(p => only == null || p.Name == only).ToList();
-        if (profiles.Count == 0) throw new UsageException($"no controller profile named '{only}' in {profilesDir}");
+        var profiles = ControllerProfiles.All().Where(p => only == null || p.Name == only).ToList();
+        if (profiles.Count == 0) throw new UsageException($"no controller profile named '{only}' in {ControllerProfiles.Folder()}");
         var rigs = new List<(string Name, HumanoidMap Map)>();
         if (handFile == null || handFile == "reference") rigs.Add(("reference", ReferenceHandRig.Build()));
         if (handFile == null) handFile = FindMixamoHand();
@@ -163,16 +161,6 @@ public sealed class FingersCommand : ICommand
             ["bytes_per_frame"] = bytes / (double)frames,
             ["max_t_difference"] = maxDiff,
         };
-    }
-
-    private static string FindProfiles()
-    {
-        for (string dir = AppContext.BaseDirectory; dir != null; dir = Path.GetDirectoryName(dir))
-        {
-            string candidate = Path.Combine(dir, "Runtime", "ControllerProfiles");
-            if (Directory.Exists(candidate)) return candidate;
-        }
-        throw new DirectoryNotFoundException("Runtime/ControllerProfiles not found above the tool's folder");
     }
 
     private static string FindMixamoHand()

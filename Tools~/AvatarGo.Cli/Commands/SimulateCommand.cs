@@ -26,6 +26,8 @@ public sealed class SimulateCommand : ICommand
           --noise-deg DEG     rotation noise, standard deviation (default 0.1)
           --misalign-mm MM    the wearer ends the walk-in MM to the avatar's right (default 0)
           --misalign-deg DEG  and turned by DEG (default 0)
+          --controller NAME   the controller held in the palm: a profile of Runtime/ControllerProfiles
+                              (default vive-wand) or none for a generic 2 cm handle; evaluate with the same
         Exit codes: 0 ok, 1 unreadable input, 2 bad arguments.
         """;
 
@@ -55,6 +57,7 @@ public sealed class SimulateCommand : ICommand
             RotationNoiseDegrees = (float)a.Double("noise-deg", 0.1),
             Misalignment = new Vector3((float)(a.Double("misalign-mm", 0) / 1000.0), 0, 0),
             MisalignmentYawDegrees = (float)a.Double("misalign-deg", 0),
+            Controller = ControllerProfiles.Named(a.String("controller", ControllerProfiles.Default)),
         };
         if (!(o.Rate >= 10 && o.Rate <= 1000)) throw new UsageException("--rate must be between 10 and 1000 Hz");
         if (o.PositionNoise < 0 || o.RotationNoiseDegrees < 0) throw new UsageException("noise must not be negative");
