@@ -11,22 +11,31 @@ using AvatarGo.Simulation;
 
 namespace AvatarGo.Cli.Commands;
 
-/// <summary>`avatargo bench`: per-frame cost of the body solve, in nanoseconds and bytes.</summary>
+/// <summary>`avatargo bench`: per-frame cost of the whole pipeline and of its parts, in nanoseconds and bytes.</summary>
 public sealed class BenchCommand : ICommand
 {
-    public string Name => "bench";
-    public string Summary => "Time the per-frame body solve (ns/frame, bytes allocated/frame)";
-    public string Help => """
-        avatargo bench [--json] [--runs N] [--frames N] [--bvh FILE]
+    /// <summary>A 90 Hz frame, in nanoseconds: the budget of everything an application does in it.</summary>
+    private const double FrameNs90Hz = 1e9 / 90.0;
 
-        Simulates a real mocap clip (default: the bundled one), calibrates, then times the per-frame
-        work on every frame of the motion: the body solver (device poses -> targets) and the full-body
-        IK (targets -> posed skeleton), alone and together. Reports nanoseconds per frame (median over
-        N runs, with min and max) and bytes allocated per frame on this thread (must be 0), and the
-        machine. Run it in Release: dotnet run --project Tools~/AvatarGo.Cli -c Release -- bench
-          --runs N   timed runs per case (default 15)
-          --frames N time only the first N frames of the motion (default: all)
-          --json     print JSON instead of a table
+    public string Name => "bench";
+    public string Summary => "Time the whole pipeline per frame (body + both hands' fingers) and its parts (ns/frame, bytes/frame)";
+    public string Help => """
+        avatargo bench [--json] [--runs N] [--frames N] [--bvh FILE] [--controller NAME] [--warmup S]
+
+        Simulates a real mocap clip as a 90 Hz session (default: the bundled Mixamo clip, whose avatar has
+        finger bones), calibrates it through the pipeline, then times the per-frame work on every frame of
+        the motion: the whole pipeline (SelfAvatarPipeline.Update: targets, body IK, hands on the
+        controllers, both hands' finger IK) as the headline case; the body alone (the same pipeline
+        without finger IK); both hands' fingers alone (FingerSolver on the poses the pipeline produced);
+        and the body's two stages (devices -> targets, targets -> posed skeleton). Reports nanoseconds per
+        frame (median over N runs, with min and max), bytes allocated per frame on this thread (must be 0),
+        how many avatars one core could solve in a 90 Hz frame, and the machine. Run it in Release:
+        dotnet run --project Tools~/AvatarGo.Cli -c Release -- bench
+          --runs N          timed runs per case (default 15)
+          --frames N        time only the first N frames of the motion (default: all)
+          --controller NAME the controller in both hands (default vive-wand)
+          --warmup S        seconds of warm-up per case, for .NET's tiered JIT (default 1)
+          --json            print JSON instead of a table
         """;
 
     public int Run(string[] args, TextWriter stdout, TextWriter stderr)
@@ -36,45 +45,58 @@ public sealed class BenchCommand : ICommand
         int runs = a.Int("runs", 15);
         string bvh = a.String("bvh");
         int frames = a.Int("frames", int.MaxValue);
+        double warmup = a.Double("warmup", 1);
+        ControllerProfile controller = ControllerProfiles.Named(a.String("controller", ControllerProfiles.Default))
+            ?? throw new UsageException("bench needs a controller profile (the fingers are part of the pipeline)");
         a.ThrowOnUnknown(0);
         if (runs < 1) throw new UsageException("--runs must be at least 1");
         if (frames < 1) throw new UsageException("--frames must be at least 1");
+        if (!(warmup >= 0 && warmup <= 60)) throw new UsageException("--warmup must be between 0 and 60 seconds");
 
-        var fixture = BenchFixture.Create(bvh ?? DemoCommandPaths.BundledClip(), frames);
+        var fixture = BenchFixture.Create(bvh ?? DemoCommandPaths.BundledClip("mixamo_fingers_30fps.bvh"), frames, controller);
+        var warm = TimeSpan.FromSeconds(warmup);
         var results = new List<BenchResult>
         {
-            Measure("body solver (devices -> targets)", fixture, runs, f => f.SolveTargets()),
-            Measure("full-body IK (targets -> pose)", fixture, runs, f => f.SolveIk()),
-            Measure("body solve total (solver + IK)", fixture, runs, f => f.SolveBoth()),
+            Measure(fixture.HasFingers ? "whole pipeline (body + both hands' fingers)" : "whole pipeline (this avatar has no finger bones)", fixture, runs, warm, f => f.RunPipeline()),
+            Measure("body only (pipeline without finger IK)", fixture, runs, warm, f => f.RunBodyOnly()),
         };
+        if (fixture.HasFingers) results.Add(Measure("fingers only (both hands)", fixture, runs, warm, f => f.RunFingers()));
+        results.Add(Measure("  body: devices -> targets", fixture, runs, warm, f => f.RunTargets()));
+        results.Add(Measure("  body: targets -> posed skeleton (IK)", fixture, runs, warm, f => f.RunIk()));
+        double avatars = Math.Floor(FrameNs90Hz / results[0].Median);
         var machine = Machine();
         if (json)
         {
             stdout.WriteLine(JsonSerializer.Serialize(new
             {
                 machine,
+                clip = Path.GetFileName(fixture.Clip),
+                controller = controller.Name,
                 frames = fixture.Frames,
+                joints = fixture.Joints,
                 runs,
-                cases = results.Select(r => new { name = r.Name, ns_per_frame_median = r.Median, ns_per_frame_min = r.Min, ns_per_frame_max = r.Max, bytes_per_frame = r.BytesPerFrame }),
+                avatars_per_core_at_90hz = avatars,
+                cases = results.Select(r => new { name = r.Name.Trim(), ns_per_frame_median = r.Median, ns_per_frame_min = r.Min, ns_per_frame_max = r.Max, bytes_per_frame = r.BytesPerFrame }),
             }, new JsonSerializerOptions { WriteIndented = true }));
             return 0;
         }
         stdout.WriteLine($"machine: {machine["cpu"]}, {machine["cores"]} cores, {machine["os"]}, .NET {machine["dotnet"]}, {machine["configuration"]}");
-        stdout.WriteLine($"motion: {Path.GetFileName(fixture.Clip)} as {fixture.Frames} frames at 90 Hz, avatar of {fixture.Joints} joints; {runs} runs per case");
-        stdout.WriteLine("case                                 median ns/frame   min     max   bytes/frame");
+        stdout.WriteLine($"motion: {Path.GetFileName(fixture.Clip)} as {fixture.Frames} frames at 90 Hz, avatar of {fixture.Joints} joints, {controller.Name} in both hands; {runs} runs per case");
+        stdout.WriteLine("case                                          median ns/frame   min     max   bytes/frame");
         foreach (var r in results)
-            stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{r.Name,-36} {r.Median,10:0} {r.Min,9:0} {r.Max,7:0} {r.BytesPerFrame,9:0.###}"));
+            stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{r.Name,-45} {r.Median,10:0} {r.Min,9:0} {r.Max,7:0} {r.BytesPerFrame,9:0.###}"));
+        stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"one core could solve {avatars:0} avatars in a 90 Hz frame (11.1 ms) doing nothing else"));
         return 0;
     }
 
     private sealed record BenchResult(string Name, double Median, double Min, double Max, double BytesPerFrame);
 
-    private static BenchResult Measure(string name, BenchFixture f, int runs, Action<BenchFixture> solveAll)
+    private static BenchResult Measure(string name, BenchFixture f, int runs, TimeSpan warmup, Action<BenchFixture> solveAll)
     {
-        // Warm up for a second: .NET compiles hot methods again, optimised, only after they have run for a while
-        // (tiered compilation), and a short clip would otherwise be timed in its first, unoptimised tier.
+        // Warm up: .NET compiles hot methods again, optimised, only after they have run for a while (tiered
+        // compilation), and a short clip would otherwise be timed in its first, unoptimised tier.
         var warm = Stopwatch.StartNew();
-        do { solveAll(f); System.Threading.Thread.Sleep(1); } while (warm.ElapsedMilliseconds < 1000);
+        do { solveAll(f); System.Threading.Thread.Sleep(1); } while (warm.Elapsed < warmup);
         var times = new double[runs];
         long bytes = 0;
         for (int r = 0; r < runs; r++)
@@ -115,66 +137,112 @@ public sealed class BenchCommand : ICommand
     }
 }
 
-/// <summary>A calibrated solver and the device samples of a whole motion, ready to be timed.</summary>
+/// <summary>Calibrated pipelines and the device samples of a whole motion, ready to be timed.</summary>
 internal sealed class BenchFixture
 {
     private DeviceSample[][] _samples;
-    private BodyTargets[] _targets;
-    private BodyTargetMapper _solver;
+    private double[] _times;
+    private SelfAvatarPipeline _pipeline, _bodyOnly;
+    private BodyTargetMapper _mapper;
     private FullBodyIk _ik;
     private SkeletonPose _pose;
+    private BodyTargets[] _targets;
     private BodyTargets _scratch;
+    private readonly FingerSolver[] _fingers = new FingerSolver[2];
+    private RigidPose[][] _wrists, _controllers;
 
     public string Clip { get; private set; }
     public int Frames => _samples.Length;
     public int Joints => _pose.Skeleton.JointCount;
+    public bool HasFingers => _fingers[0] != null && _fingers[1] != null;
 
-    public static BenchFixture Create(string clipPath, int maxFrames = int.MaxValue)
+    public static BenchFixture Create(string clipPath, int maxFrames, ControllerProfile controller)
     {
         BvhClip clip = BvhReader.ReadFile(clipPath, new BvhReadOptions { ToMetres = true });
-        var simulator = new SessionSimulator(clip, new SimulationOptions { Seed = 1 });
+        var simulator = new SessionSimulator(clip, new SimulationOptions { Seed = 1, Controller = controller });
         var text = new StringWriter();
         using (var writer = new SessionWriter(text, simulator.CreateHeader())) simulator.Run(writer);
         using var reader = new SessionReader(new StringReader(text.ToString()), "bench");
-        var calibrator = new Calibrator(reader.Header.Devices, reader.Header.TruthHumanoid);
-        var frame = reader.CreateFrame();
-        var samples = new List<DeviceSample[]>();
-        while (reader.ReadFrame(frame))
-        {
-            if (calibrator.State != CalibrationState.Calibrated) { calibrator.Update(frame.Time, frame.Samples, frame.Events); continue; }
-            if (samples.Count < maxFrames) samples.Add((DeviceSample[])frame.Samples.Clone());
-        }
-        if (calibrator.State != CalibrationState.Calibrated) throw new InvalidDataException("calibration did not complete: " + calibrator.LastStep.Message);
+        var withFingers = new PipelineSettings();
+        withFingers.LeftHand.Controller = withFingers.RightHand.Controller = controller;
         var f = new BenchFixture
         {
             Clip = clipPath,
-            _samples = samples.ToArray(),
-            _solver = new BodyTargetMapper(calibrator.Profile, reader.Header.Devices, calibrator.ScaledAvatar, calibrator.AvatarPose),
-            _ik = new FullBodyIk(calibrator.ScaledAvatar, calibrator.AvatarPose),
-            _pose = new SkeletonPose(calibrator.ScaledAvatar.Skeleton),
+            _pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid, withFingers),
+            _bodyOnly = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid),
         };
-        f._pose.CopyFrom(calibrator.AvatarPose);
-        f._targets = new BodyTargets[f._samples.Length];
-        for (int i = 0; i < f._samples.Length; i++) f._solver.Compute(f._samples[i], ref f._targets[i]);
+        var frame = reader.CreateFrame();
+        var samples = new List<DeviceSample[]>();
+        var times = new List<double>();
+        while (reader.ReadFrame(frame))
+        {
+            if (f._pipeline.State != CalibrationState.Calibrated)
+            {
+                f._pipeline.Update(frame);
+                f._bodyOnly.Update(frame);
+                continue;
+            }
+            if (samples.Count >= maxFrames) continue;
+            samples.Add((DeviceSample[])frame.Samples.Clone());
+            times.Add(frame.Time);
+        }
+        if (f._pipeline.State != CalibrationState.Calibrated) throw new InvalidDataException("calibration did not complete: " + f._pipeline.LastCalibrationStep.Message);
+        f._samples = samples.ToArray();
+        f._times = times.ToArray();
+
+        // The body's stages on their own, from the same calibration.
+        HumanoidMap scaled = f._pipeline.ScaledAvatar;
+        f._mapper = new BodyTargetMapper(f._pipeline.ActiveProfile, reader.Header.Devices, scaled, f._pipeline.Pose);
+        f._ik = new FullBodyIk(scaled, f._pipeline.Pose);
+        f._pose = new SkeletonPose(scaled.Skeleton);
+        f._pose.CopyFrom(f._pipeline.Pose);
+        f._targets = new BodyTargets[f.Frames];
+        for (int i = 0; i < f.Frames; i++) f._mapper.Compute(f._samples[i], ref f._targets[i]);
+
+        // The fingers on their own: the wrist and controller poses the whole pipeline produced, frame by frame.
+        f._wrists = new[] { new RigidPose[f.Frames], new RigidPose[f.Frames] };
+        f._controllers = new[] { new RigidPose[f.Frames], new RigidPose[f.Frames] };
+        foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+            if (f._pipeline.Hand(side).HasFingerIk) f._fingers[(int)side] = new FingerSolver(new HandModel(scaled, side), controller);
+        int leftHand = scaled[HumanoidBone.LeftHand], rightHand = scaled[HumanoidBone.RightHand];
+        for (int i = 0; i < f.Frames; i++)
+        {
+            f._pipeline.Update(f._times[i], f._samples[i], default, default, null);
+            f._wrists[0][i] = f._pipeline.Pose.World[leftHand];
+            f._wrists[1][i] = f._pipeline.Pose.World[rightHand];
+            f._controllers[0][i] = f._pipeline.Hand(BodySide.Left).ControllerPose;
+            f._controllers[1][i] = f._pipeline.Hand(BodySide.Right).ControllerPose;
+        }
         return f;
     }
 
-    public void SolveTargets()
+    public void RunPipeline()
     {
-        for (int i = 0; i < _samples.Length; i++) _solver.Compute(_samples[i], ref _scratch);
+        for (int i = 0; i < _samples.Length; i++) _pipeline.Update(_times[i], _samples[i], default, default, null);
     }
 
-    public void SolveIk()
+    public void RunBodyOnly()
     {
-        for (int i = 0; i < _targets.Length; i++) _ik.Solve(in _targets[i], _pose);
+        for (int i = 0; i < _samples.Length; i++) _bodyOnly.Update(_times[i], _samples[i], default, default, null);
     }
 
-    public void SolveBoth()
+    public void RunFingers()
     {
+        if (!HasFingers) return;
         for (int i = 0; i < _samples.Length; i++)
         {
-            _solver.Compute(_samples[i], ref _scratch);
-            _ik.Solve(in _scratch, _pose);
+            _fingers[0].Solve(_wrists[0][i], _controllers[0][i], GripMode.Hold);
+            _fingers[1].Solve(_wrists[1][i], _controllers[1][i], GripMode.Hold);
         }
+    }
+
+    public void RunTargets()
+    {
+        for (int i = 0; i < _samples.Length; i++) _mapper.Compute(_samples[i], ref _scratch);
+    }
+
+    public void RunIk()
+    {
+        for (int i = 0; i < _targets.Length; i++) _ik.Solve(in _targets[i], _pose);
     }
 }

@@ -125,11 +125,11 @@ public sealed class DemoCommand : ICommand
 /// <summary>Where the tool finds the clip it bundles.</summary>
 internal static class DemoCommandPaths
 {
-    /// <summary>The clip shipped next to the tool (Tools~/data, copied to the output folder).</summary>
-    public static string BundledClip()
+    /// <summary>A clip shipped next to the tool (from Tests/Core/Data~, copied to the output folder's data/).</summary>
+    public static string BundledClip(string name = "mocapbank_30fps.bvh")
     {
-        string path = Path.Combine(AppContext.BaseDirectory, "data", "mocapbank_30fps.bvh");
+        string path = Path.Combine(AppContext.BaseDirectory, "data", name);
         if (File.Exists(path)) return path;
-        throw new FileNotFoundException("the bundled clip data/mocapbank_30fps.bvh is missing next to the tool; pass --bvh FILE");
+        throw new FileNotFoundException($"the bundled clip data/{name} is missing next to the tool; pass --bvh FILE");
     }
 }

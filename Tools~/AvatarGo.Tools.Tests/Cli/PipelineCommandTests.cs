@@ -9,11 +9,15 @@ public class PipelineCommandTests
     [Test]
     public void BenchAllocatesNothingPerFrame()
     {
-        var r = CliRunner.Run("bench", "--json", "--runs", "3");
+        var r = CliRunner.Run("bench", "--json", "--runs", "3", "--warmup", "0.2");
         Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
         using var doc = JsonDocument.Parse(r.Stdout);
-        Assert.That(doc.RootElement.GetProperty("frames").GetInt32(), Is.GreaterThan(1000));
-        foreach (var c in doc.RootElement.GetProperty("cases").EnumerateArray())
+        Assert.That(doc.RootElement.GetProperty("frames").GetInt32(), Is.GreaterThan(250), "every frame of the Mixamo clip after calibration");
+        Assert.That(doc.RootElement.GetProperty("avatars_per_core_at_90hz").GetDouble(), Is.GreaterThan(0));
+        var cases = doc.RootElement.GetProperty("cases");
+        Assert.That(cases[0].GetProperty("name").GetString(), Does.StartWith("whole pipeline"), "the headline case");
+        Assert.That(cases.GetArrayLength(), Is.EqualTo(5));
+        foreach (var c in cases.EnumerateArray())
         {
             // Exactly zero: per-frame paths must not allocate (a GC stall is a dropped frame in VR).
             Assert.That(c.GetProperty("bytes_per_frame").GetDouble(), Is.EqualTo(0.0), c.GetProperty("name").GetString());
@@ -24,10 +28,11 @@ public class PipelineCommandTests
     [Test]
     public void BenchWithFewFramesAllocatesNothingPerFrame()
     {
-        var r = CliRunner.Run("bench", "--frames", "200", "--json", "--runs", "3");
+        var r = CliRunner.Run("bench", "--frames", "200", "--json", "--runs", "3", "--warmup", "0.2", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--controller", "quest-touch");
         Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
         using var doc = JsonDocument.Parse(r.Stdout);
         Assert.That(doc.RootElement.GetProperty("frames").GetInt32(), Is.EqualTo(200));
+        Assert.That(doc.RootElement.GetProperty("cases").GetArrayLength(), Is.EqualTo(4), "no finger case for an avatar without finger bones");
         foreach (var c in doc.RootElement.GetProperty("cases").EnumerateArray())
             Assert.That(c.GetProperty("bytes_per_frame").GetDouble(), Is.EqualTo(0.0), c.GetProperty("name").GetString());
     }
