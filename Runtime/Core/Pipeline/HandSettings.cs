@@ -14,11 +14,5 @@ namespace AvatarGo.Core
 
         /// <summary>What the fingers do: hold the controller (the default, as the paper's avatar always does), open, point, or follow the trigger and grip.</summary>
         public GripMode Grip { get; set; } = GripMode.Hold;
-
-        /// <summary>
-        /// Seconds the drawn controller takes to move between the tracked pose and the hand when the arm stops or starts
-        /// reaching it (0.15 s): no jump when the hand comes back within reach.
-        /// </summary>
-        public float ControllerBlendSeconds { get; set; } = 0.15f;
     }
 }

@@ -25,14 +25,14 @@ namespace AvatarGo.Core
         public float DistanceLeft { get; internal set; }
 
         /// <summary>
-        /// Where to draw the virtual controller this frame: the tracked pose while the hand reaches it, attached to the hand
-        /// (in the grip the calibration measured) while it cannot, blended between the two over
-        /// <see cref="HandSettings.ControllerBlendSeconds"/>.
+        /// Where to draw the virtual controller this frame: the tracked pose while the hand reaches it; in the hand, in the
+        /// grip the wrist is placed with, while it cannot (or while the controller is not tracked), as the paper does. The two
+        /// meet where the hand stops reaching (within <see cref="TwoBoneIk.ReachedTolerance"/>), so switching does not jump.
         /// </summary>
         public RigidPose ControllerPose { get; internal set; } = RigidPose.Identity;
 
-        /// <summary>0 when the drawn controller is at its tracked pose, 1 when it is fully attached to the hand, between while it moves.</summary>
-        public float AttachedToHand { get; internal set; }
+        /// <summary>True when the controller is drawn in the hand rather than at its tracked pose.</summary>
+        public bool DrawnInHand { get; internal set; }
 
         /// <summary>True when this hand's fingers are solved on a controller (a profile is set and the rig has finger bones).</summary>
         public bool HasFingerIk { get; internal set; }

@@ -17,14 +17,13 @@ namespace AvatarGo.Core
     /// <para>Hands: the wrist's goal is the controller's pose times the palm's exact offset from the controller's grip
     /// (<see cref="HandPlacement.PalmOnController"/>, the paper's: needs the hand's controller profile and finger bones),
     /// or the controller-to-wrist offset measured at the walk-in (<see cref="HandPlacement.CalibratedOffset"/>, and for
-    /// hands without finger IK). Where the arm cannot reach, the hand goes as
-    /// far as it can and the virtual controller is drawn in the hand, in the same grip (<see cref="HandState.ControllerPose"/>),
-    /// sliding back to the tracked pose over <see cref="HandSettings.ControllerBlendSeconds"/> when the hand reaches again;
-    /// the fingers close on the controller where it is drawn.</para>
+    /// hands without finger IK). Where the arm cannot reach, the hand goes as far as it can and the virtual controller is
+    /// drawn in the hand, in the same grip (<see cref="HandState.ControllerPose"/>), back at the tracked pose as soon as the
+    /// hand reaches it again; the fingers close on the controller where it is drawn.</para>
     /// <para>Per frame after calibration: nothing is allocated, nothing throws on bad samples (NaN, non-unit quaternions,
     /// lost tracking: the affected part keeps its last pose), the output is finite (a frame that would not be is replaced by
-    /// the last good one), and nothing depends on the frame rate but the controller's blend, which uses the frames' times.
-    /// Trigger presses after calibration are left to the application.</para>
+    /// the last good one), and nothing depends on the frame rate. Trigger presses after calibration are left to the
+    /// application.</para>
     /// </remarks>
     public sealed class SelfAvatarPipeline
     {
@@ -39,7 +38,6 @@ namespace AvatarGo.Core
         private SkeletonPose _pose, _lastGood;
         private BodyTargets _targets;
         private IkReport _report;
-        private double _lastTime = double.NaN;
 
         /// <summary>Creates the pipeline for these devices (in the order every frame's samples come) and this avatar.</summary>
         /// <exception cref="ArgumentException">The avatar lacks a required humanoid bone, or two devices share an id.</exception>
@@ -109,15 +107,13 @@ namespace AvatarGo.Core
             if (samples.Length != _devices.Length) throw new ArgumentException($"Expected {_devices.Length} samples, got {samples.Length}.", nameof(samples));
             if (trigger.Length != 0 && trigger.Length != _devices.Length) throw new ArgumentException($"Expected {_devices.Length} trigger values or none, got {trigger.Length}.", nameof(trigger));
             if (grip.Length != 0 && grip.Length != _devices.Length) throw new ArgumentException($"Expected {_devices.Length} grip values or none, got {grip.Length}.", nameof(grip));
-            float dt = !double.IsNaN(_lastTime) && time > _lastTime ? (float)Math.Min(time - _lastTime, 0.25) : 0f;
-            _lastTime = time;
             if (_mapper == null)
             {
                 CalibrationStep step = _calibrator.Update(time, samples, events);
                 if (State == CalibrationState.Calibrated) Setup(); // solving starts with the next frame
                 return step;
             }
-            Solve(dt, samples, trigger, grip);
+            Solve(samples, trigger, grip);
             CalibrationStep last = _calibrator.LastStep;
             return new CalibrationStep(State, CalibrationStepOutcome.Waiting, last.Error, last.Message, null);
         }
@@ -199,7 +195,7 @@ namespace AvatarGo.Core
                 int s = (int)side;
                 _controllerInWrist[s] = ActiveProfile.JointInDevice(BodyRoles.Hand(side)).Inverse();
                 _handStates[s].ControllerPose = _pose.World[scaled[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]] * _controllerInWrist[s];
-                _handStates[s].AttachedToHand = 0f;
+                _handStates[s].DrawnInHand = false;
             }
         }
 
@@ -226,19 +222,19 @@ namespace AvatarGo.Core
 
         // ---- Every frame once calibrated ----------------------------------------------------------------------
 
-        private void Solve(float dt, ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip)
+        private void Solve(ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip)
         {
             _mapper.Compute(samples, ref _targets);
             _report = _ik.Solve(in _targets, _pose);
-            PlaceHand(BodySide.Left, in _targets.LeftHand, _report.LeftHand, dt, samples, trigger, grip);
-            PlaceHand(BodySide.Right, in _targets.RightHand, _report.RightHand, dt, samples, trigger, grip);
+            PlaceHand(BodySide.Left, in _targets.LeftHand, _report.LeftHand, samples, trigger, grip);
+            PlaceHand(BodySide.Right, in _targets.RightHand, _report.RightHand, samples, trigger, grip);
             _pose.UpdateWorld();
             if (IsFinite(_pose)) _lastGood.CopyFrom(_pose);
             else _pose.CopyFrom(_lastGood); // never a NaN on a bone: keep the last good frame
         }
 
         // Where the controller is drawn (tracked, or in the hand where the arm cannot reach), then the fingers on it.
-        private void PlaceHand(BodySide side, in LimbTarget target, LimbResult reach, float dt, ReadOnlySpan<DeviceSample> samples,
+        private void PlaceHand(BodySide side, in LimbTarget target, LimbResult reach, ReadOnlySpan<DeviceSample> samples,
             ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip)
         {
             int s = (int)side;
@@ -250,11 +246,9 @@ namespace AvatarGo.Core
             state.ControllerTracked = target.IsActive;
             state.Reached = target.IsActive && reach.Reached;
             state.DistanceLeft = target.IsActive ? reach.DistanceLeft : 0f;
+            state.DrawnInHand = !state.Reached;
+            state.ControllerPose = state.Reached ? samples[device].Pose : inHand;
             HandSettings settings = Settings.Hand(side);
-            float step = settings.ControllerBlendSeconds > 0f ? dt / settings.ControllerBlendSeconds : 1f;
-            float wanted = state.Reached ? 0f : 1f;
-            state.AttachedToHand = state.AttachedToHand < wanted ? Math.Min(wanted, state.AttachedToHand + step) : Math.Max(wanted, state.AttachedToHand - step);
-            state.ControllerPose = target.IsActive ? RigidPose.Lerp(samples[device].Pose, inHand, state.AttachedToHand) : inHand;
 
             FingerSolver fingers = _fingers[s];
             if (fingers == null) return;

@@ -49,6 +49,28 @@ namespace AvatarGo.Core.Tests
                 samples[i] = new DeviceSample(_devicePoses[Array.IndexOf(BodyRoles.All, TrueRoles[i])], true);
         }
 
+        /// <summary>Feeds 1 s at 90 Hz to the pipeline, with a trigger press on the last frame.</summary>
+        public void HoldAndPress(SelfAvatarPipeline pipeline, ref double time, float positionNoise, float rotationNoiseDegrees)
+        {
+            var samples = new DeviceSample[Devices.Length];
+            var press = new List<DeviceEvent> { new DeviceEvent(1, DeviceEventKind.TriggerPressed) };
+            for (int i = 0; i < 90; i++)
+            {
+                Sample(samples, positionNoise, rotationNoiseDegrees);
+                time += 1.0 / 90;
+                pipeline.Update(time, samples, default, default, i == 89 ? press : null);
+            }
+        }
+
+        /// <summary>Calibrates the pipeline: T-pose at <paramref name="placement"/>, press, walk exactly into the avatar, press.</summary>
+        public void Calibrate(SelfAvatarPipeline pipeline, RigidPose placement, ref double time, float positionNoise = 0.001f, float rotationNoiseDegrees = 0.1f)
+        {
+            StandInTPose(placement);
+            HoldAndPress(pipeline, ref time, positionNoise, rotationNoiseDegrees);
+            StandInTPose(pipeline.Profile.Placement);
+            HoldAndPress(pipeline, ref time, positionNoise, rotationNoiseDegrees);
+        }
+
         /// <summary>Feeds 1 s at 90 Hz to the calibrator, with a trigger press on the last frame.</summary>
         public void HoldAndPress(Calibrator calibrator, ref double time, float positionNoise, float rotationNoiseDegrees)
         {

@@ -40,13 +40,14 @@ public sealed class CalibrateCommand : ICommand
         var calibrator = new Calibrator(reader.Header.Devices, avatar);
         SessionFrame frame = reader.CreateFrame();
         int presses = 0;
-        string lastRefusal = null;
+        string lastRefusal = null, lastIgnored = null;
         while (calibrator.State != CalibrationState.Calibrated && reader.ReadFrame(frame))
         {
-            calibrator.Update(frame.Time, frame.Samples, frame.Events);
+            CalibrationStep step = calibrator.Update(frame.Time, frame.Samples, frame.Events);
             foreach (DeviceEvent e in frame.Events)
                 if (e.Kind == DeviceEventKind.TriggerPressed) presses++;
-            if (calibrator.LastStep.Error != CalibrationError.None) lastRefusal = $"{calibrator.LastStep.Error}: {calibrator.LastStep.Message}";
+            if (step.Outcome == CalibrationStepOutcome.Refused) lastRefusal = $"{step.Error}: {step.Message}";
+            if (step.Outcome == CalibrationStepOutcome.PressIgnored) lastIgnored = step.Explanation;
         }
         bool ok = calibrator.State == CalibrationState.Calibrated;
         var inv = CultureInfo.InvariantCulture;
@@ -64,6 +65,7 @@ public sealed class CalibrateCommand : ICommand
         {
             stdout.WriteLine($"status: {(ok ? "calibrated" : "not calibrated (" + calibrator.State + ")")} after {presses} trigger press(es)");
             if (lastRefusal != null) stdout.WriteLine($"last refusal: {lastRefusal}");
+            if (lastIgnored != null) stdout.WriteLine($"last ignored press: {lastIgnored}");
             if (!ok) stdout.WriteLine($"message: {calibrator.LastStep.Message}");
             if (calibrator.LastStep.Explanation.Length > 0) stdout.WriteLine($"note: {calibrator.LastStep.Explanation.Trim()}");
             if (calibrator.Profile != null)

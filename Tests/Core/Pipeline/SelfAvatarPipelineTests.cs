@@ -1,0 +1,231 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Numerics;
+using NUnit.Framework;
+using AvatarGo.Simulation;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// The whole pipeline on recorded human motion: calibration from the session's presses (and the presses that must not
+    /// calibrate), a restored profile, bad samples mid-motion, the hands on their controllers and the fingers on the
+    /// solved body, and frame-rate independence.
+    /// </summary>
+    public class SelfAvatarPipelineTests
+    {
+        private static readonly Lazy<string> MocapBank = new Lazy<string>(() => Sessions.Simulate("mocapbank_30fps.bvh"));
+
+        private static ControllerProfile Profile(string name) =>
+            ControllerProfile.Parse(File.ReadAllText(TestData.InPackage("Runtime/ControllerProfiles/" + name + ".json")));
+
+        private static PipelineSettings WithController(ControllerProfile controller)
+        {
+            var settings = new PipelineSettings();
+            settings.LeftHand.Controller = settings.RightHand.Controller = controller;
+            return settings;
+        }
+
+        [Test]
+        public void ASessionCalibratesWithItsTwoPresses()
+        {
+            SelfAvatarPipeline p = Sessions.Replay(MocapBank.Value);
+            Assert.That(p.State, Is.EqualTo(CalibrationState.Calibrated), p.LastCalibrationStep.ToString());
+            Assert.That(p.Pose, Is.SameAs(p.Pose), "one pose object while calibrated");
+            Assert.That(p.Pose.Skeleton, Is.SameAs(p.ScaledAvatar.Skeleton));
+        }
+
+        [Test]
+        public void BothControllersPressingInTheSameFrameWithNoSecondPressEndsNotCalibrated()
+        {
+            // Both triggers at the T-pose, in one frame; the walk-in press removed.
+            string session = Sessions.Edit(MocapBank.Value, (i, f) =>
+            {
+                bool tposePress = f.Events.Exists(e => e.Kind == DeviceEventKind.TriggerPressed && e.DeviceId == 1);
+                f.Events.RemoveAll(e => e.Kind == DeviceEventKind.TriggerPressed);
+                if (tposePress)
+                {
+                    f.Events.Add(new DeviceEvent(1, DeviceEventKind.TriggerPressed));
+                    f.Events.Add(new DeviceEvent(2, DeviceEventKind.TriggerPressed));
+                }
+            });
+            SelfAvatarPipeline p = Sessions.Replay(session);
+            Assert.That(p.State, Is.EqualTo(CalibrationState.WalkIn), "the walk-in was not skipped");
+            Assert.That(p.Pose, Is.Not.Null, "the avatar stands in T-pose where the wearer stood");
+        }
+
+        [Test]
+        public void PressesFromATrackerEndNotCalibrated()
+        {
+            // Every press attributed to device 4, the pelvis tracker of a simulated session.
+            string session = Sessions.Edit(MocapBank.Value, (i, f) =>
+            {
+                for (int e = 0; e < f.Events.Count; e++) f.Events[e] = new DeviceEvent(4, f.Events[e].Kind);
+            });
+            SelfAvatarPipeline p = Sessions.Replay(session);
+            Assert.That(p.State, Is.EqualTo(CalibrationState.WaitingForTPose));
+            Assert.That(p.LastCalibrationStep.Outcome, Is.EqualTo(CalibrationStepOutcome.PressIgnored));
+            Assert.That(p.LastCalibrationStep.Explanation, Does.Contain("only a controller's trigger"));
+            Assert.That(p.Pose, Is.Null, "no avatar is shown before the T-pose step");
+        }
+
+        [Test]
+        public void ARestoredProfileSolvesLikeTheCalibrationItCameFrom()
+        {
+            string session = MocapBank.Value;
+            SelfAvatarPipeline calibrated = null, restored = null;
+            var solvedA = new List<RigidPose>();
+            var solvedB = new List<RigidPose>();
+            // First run: calibrate from the session; save its profile as the JSON a headset would keep.
+            calibrated = Sessions.Replay(session, null, (i, p, f) => { if (p.State == CalibrationState.Calibrated) solvedA.Add(p.Pose.World[p.ScaledAvatar[HumanoidBone.LeftHand]]); });
+            string json = CalibrationProfileStore.ToJson(calibrated.Profile);
+            // Second run: a new pipeline restores it before the first frame, then plays the same frames after calibration.
+            using (SessionReader reader = Sessions.Read(session))
+            {
+                restored = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
+                Assert.That(restored.TryRestore(CalibrationProfileStore.FromJson(json)), Is.True);
+                SessionFrame frame = reader.CreateFrame();
+                bool after = false;
+                var replay = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
+                while (reader.ReadFrame(frame))
+                {
+                    replay.Update(frame);
+                    if (!after) { after = replay.State == CalibrationState.Calibrated; continue; }
+                    restored.Update(frame);
+                    solvedB.Add(restored.Pose.World[restored.ScaledAvatar[HumanoidBone.LeftHand]]);
+                }
+            }
+            Assert.That(solvedB.Count, Is.EqualTo(solvedA.Count - 1), "the calibration frame itself is not solved");
+            for (int i = 0; i < solvedB.Count; i++)
+                Approx.Near(solvedA[i + 1], solvedB[i], 1e-4f, 0.05f, $"frame {i}");
+            Assert.That(restored.LastCalibrationStep.Message, Does.Contain("restored"));
+        }
+
+        [Test]
+        public void GarbageSamplesMidMotionNeverThrowNorReachABone()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 41);
+            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map, WithController(Profile("vive-wand")));
+            double t = 0;
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            Assume.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), pipeline.LastCalibrationStep.Message);
+            var samples = new DeviceSample[6];
+            wearer.Sample(samples, 0.001f, 0.1f);
+            pipeline.Update(t += 1 / 90.0, samples, default, default, null);
+            int hips = pipeline.ScaledAvatar[HumanoidBone.Hips];
+            RigidPose goodHips = pipeline.Pose.World[hips];
+            var bad = new[]
+            {
+                new DeviceSample(new RigidPose(new Vector3(float.NaN, 1, 0), Quaternion.Identity), true),
+                new DeviceSample(new RigidPose(new Vector3(0, 1, 0), new Quaternion(0, 0, 0, 0)), true),
+                new DeviceSample(new RigidPose(new Vector3(float.PositiveInfinity, 0, 0), Quaternion.Identity), true),
+                new DeviceSample(new RigidPose(new Vector3(0, 1, 0), new Quaternion(0.3f, 0.3f, 0.3f, 0.3f)), true),
+                DeviceSample.Lost,
+            };
+            var trigger = new float[6];
+            foreach (DeviceSample garbage in bad)
+            {
+                wearer.Sample(samples, 0.001f, 0.1f);
+                foreach (DeviceRole role in new[] { DeviceRole.Pelvis, DeviceRole.Head, DeviceRole.LeftHand })
+                    samples[Array.IndexOf(Wearer.TrueRoles, role)] = garbage;
+                for (int d = 0; d < 6; d++) trigger[d] = float.NaN;
+                Assert.DoesNotThrow(() => pipeline.Update(t += 1 / 90.0, samples, trigger, default, null));
+                Assert.That(pipeline.Targets.HipsActive, Is.False);
+                Assert.That(pipeline.Hand(BodySide.Left).ControllerTracked, Is.False);
+                Approx.Near(goodHips, pipeline.Pose.World[hips], 1e-6f, 1e-3f, "the hips keep their last good pose");
+                foreach (RigidPose p in pipeline.Pose.World) Assert.That(p.IsValid, Is.True, "no NaN anywhere in the avatar");
+                foreach (RigidPose p in pipeline.Pose.Local) Assert.That(p.IsValid, Is.True, "nor in its local poses");
+                Assert.That(pipeline.Hand(BodySide.Left).ControllerPose.IsValid, Is.True);
+            }
+            Assert.Throws<ArgumentException>(() => pipeline.Update(t, new DeviceSample[5], default, default, null), "a wrong sample count is a programming error");
+        }
+
+        [Test]
+        public void TheFingersHoldTheControllersOnTheSolvedMixamoBody()
+        {
+            ControllerProfile controller = Profile("vive-wand");
+            string session = Sessions.Simulate("mixamo_fingers_30fps.bvh", new SimulationOptions { Seed = 2, Controller = controller });
+            EvaluationReport report;
+            using (SessionReader reader = Sessions.Read(session)) report = SessionEvaluator.Evaluate(reader, WithController(controller));
+            Assert.That(report.Fingers, Is.Not.Null, "the Mixamo avatar has finger bones");
+            Assert.That(report.Fingers.Frames, Is.EqualTo(report.Frames));
+            Assert.That(report.Fingers.OpenHandFrames, Is.EqualTo(0), "the palm never leaves the grip");
+            Assert.That(report.Fingers.MaxPenetrationMm, Is.LessThanOrEqualTo(1.0), "no finger inside the controller");
+            foreach (Finger f in new[] { Finger.Thumb, Finger.Index, Finger.Middle, Finger.Ring, Finger.Little })
+                Assert.That(report.Fingers.Gap(f).Median, Is.LessThanOrEqualTo(3.0), $"{f} tip on the surface (mm)");
+            // The palm on the grip puts the wrists where the grip says: within the grip's variation (±4 mm, ±4°).
+            Assert.That(report.JointPositionMm[HumanoidBone.LeftHand].Median, Is.LessThanOrEqualTo(10.0));
+            Assert.That(report.EndEffectorMm.Median, Is.LessThanOrEqualTo(5.0));
+        }
+
+        [Test]
+        public void AControllerOutOfReachIsDrawnInTheHandWithoutAJump()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 42);
+            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map);
+            double t = 0;
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            Assume.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated));
+            int right = Array.IndexOf(Wearer.TrueRoles, DeviceRole.RightHand);
+            int wrist = pipeline.ScaledAvatar[HumanoidBone.RightHand];
+            RigidPose grip = pipeline.ActiveProfile.JointInDevice(DeviceRole.RightHand).Inverse();
+            HandState hand = pipeline.Hand(BodySide.Right);
+            var samples = new DeviceSample[6];
+            // The right controller moves out along the arm, 1 cm a frame, to 40 cm beyond where the arm reaches in T-pose
+            // (an avatar with shorter arms than the wearer's), then back.
+            RigidPose previous = RigidPose.Identity;
+            float largestStep = 0f;
+            bool wasInHand = false, cameBack = false;
+            for (int i = 0; i <= 80; i++)
+            {
+                wearer.Sample(samples, 0f, 0f);
+                float out_ = 0.01f * (i <= 40 ? i : 80 - i);
+                samples[right] = new DeviceSample(new RigidPose(samples[right].Pose.Position + new Vector3(out_, 0, 0), samples[right].Pose.Rotation), true);
+                pipeline.Update(t += 1 / 90.0, samples, default, default, null);
+                if (hand.DrawnInHand)
+                {
+                    wasInHand = true;
+                    Assert.That(hand.Reached, Is.False);
+                    Approx.Near(pipeline.Pose.World[wrist] * grip, hand.ControllerPose, 1e-4f, 0.01f, "drawn in the grip, in the hand");
+                }
+                else
+                {
+                    if (wasInHand) cameBack = true;
+                    Approx.Near(samples[right].Pose, hand.ControllerPose, 1e-5f, 0.01f, "at the tracked pose while reached");
+                }
+                if (i > 0) largestStep = Math.Max(largestStep, Vector3.Distance(previous.Position, hand.ControllerPose.Position));
+                previous = hand.ControllerPose;
+            }
+            Assert.That(wasInHand, Is.True, "40 cm is beyond the arm's reach");
+            Assert.That(cameBack, Is.True, "and back within it");
+            Assert.That(largestStep, Is.LessThanOrEqualTo(0.0105f), "the drawn controller never moves more than the 1 cm the controller moves per frame");
+        }
+
+        [Test]
+        public void TheSolvedPoseDoesNotDependOnTheFrameRate()
+        {
+            // The same noise-free motion sampled at 72 and 144 Hz: at the times both rates share, the avatar is the same.
+            var at = new Dictionary<int, Dictionary<long, Vector3>>();
+            foreach (int rate in new[] { 72, 144 })
+            {
+                string session = Sessions.Simulate("mocapbank_30fps.bvh", new SimulationOptions { Rate = rate, PositionNoise = 0, RotationNoiseDegrees = 0, Seed = 3 });
+                var joints = new Dictionary<long, Vector3>();
+                Sessions.Replay(session, null, (i, p, f) =>
+                {
+                    if (p.State == CalibrationState.Calibrated) joints[(long)Math.Round(f.Time * 720)] = p.Pose.World[p.ScaledAvatar[HumanoidBone.LeftLowerArm]].Position;
+                });
+                at[rate] = joints;
+            }
+            int compared = 0;
+            float largest = 0f;
+            foreach (KeyValuePair<long, Vector3> slow in at[72])
+            {
+                if (!at[144].TryGetValue(slow.Key, out Vector3 fast)) continue;
+                largest = Math.Max(largest, Vector3.Distance(slow.Value, fast));
+                compared++;
+            }
+            Assert.That(compared, Is.GreaterThan(300));
+            Assert.That(largest, Is.LessThanOrEqualTo(0.001f), "left elbow, largest difference (m)");
+        }
+    }
+}
