@@ -136,7 +136,7 @@ namespace AvatarGo.Simulation
                 rig.Compute(pose.World, devicePoses);
                 VirtualDeviceRig.AddNoise(devicePoses, rng, _options.PositionNoise, _options.RotationNoiseDegrees);
                 for (int d = 0; d < devices.Length; d++)
-                    frame.Samples[d] = new DeviceSample(devicePoses[Array.IndexOf(BodyRoles.All, DeviceRoles[d])], true);
+                    frame.Samples[d] = new DeviceSample(devicePoses[BodyRoles.IndexOf(DeviceRoles[d])], true);
                 for (int b = 0; b < HumanoidBones.Count; b++)
                 {
                     int joint = _map[(HumanoidBone)b];

@@ -11,8 +11,8 @@ namespace AvatarGo.Simulation
     /// </summary>
     public sealed class VirtualDeviceRig
     {
-        private readonly int[] _joints = new int[BodyRoles.All.Length];
-        private readonly RigidPose[] _deviceInJoint = new RigidPose[BodyRoles.All.Length];
+        private readonly int[] _joints = new int[BodyRoles.Count]; // per role, in BodyRoles.IndexOf order
+        private readonly RigidPose[] _deviceInJoint = new RigidPose[BodyRoles.Count];
 
         /// <summary>Handle radius (m) of the controller held when none is given: 2 cm, a typical grip.</summary>
         public const float DefaultHandleRadius = 0.02f;
@@ -77,11 +77,11 @@ namespace AvatarGo.Simulation
         public DeviceMountings Mountings { get; }
 
         /// <summary>The true pose of a role's device in its joint's frame (what exact calibration should recover).</summary>
-        public RigidPose DeviceInJoint(DeviceRole role) => _deviceInJoint[IndexOf(role)];
+        public RigidPose DeviceInJoint(DeviceRole role) => _deviceInJoint[BodyRoles.IndexOf(role)];
 
         /// <summary>
         /// Writes the device poses for the wearer's world joint poses <paramref name="world"/> into
-        /// <paramref name="devices"/>, in <see cref="BodyRoles.All"/> order. Allocation-free.
+        /// <paramref name="devices"/>, indexed by <see cref="BodyRoles.IndexOf"/>. Allocation-free.
         /// </summary>
         public void Compute(ReadOnlySpan<RigidPose> world, Span<RigidPose> devices)
         {
@@ -109,13 +109,6 @@ namespace AvatarGo.Simulation
         {
             double u1 = 1.0 - rng.NextDouble(), u2 = rng.NextDouble();
             return (float)(Math.Sqrt(-2.0 * Math.Log(u1)) * Math.Cos(2.0 * Math.PI * u2));
-        }
-
-        private static int IndexOf(DeviceRole role)
-        {
-            int i = Array.IndexOf(BodyRoles.All, role);
-            if (i < 0) throw new ArgumentOutOfRangeException(nameof(role));
-            return i;
         }
     }
 }

@@ -46,7 +46,7 @@ namespace AvatarGo.Core.Tests
             Rig.Compute(Pose.World, _devicePoses);
             VirtualDeviceRig.AddNoise(_devicePoses, _rng, positionNoise, rotationNoiseDegrees);
             for (int i = 0; i < samples.Length; i++)
-                samples[i] = new DeviceSample(_devicePoses[Array.IndexOf(BodyRoles.All, TrueRoles[i])], true);
+                samples[i] = new DeviceSample(_devicePoses[BodyRoles.IndexOf(TrueRoles[i])], true);
         }
 
         /// <summary>Feeds 1 s at 90 Hz to the pipeline, with a trigger press on the last frame.</summary>
