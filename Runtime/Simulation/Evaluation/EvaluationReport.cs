@@ -39,6 +39,9 @@ namespace AvatarGo.Simulation
         /// <summary>Frames in which a hand could not reach its controller.</summary>
         public int UnreachedHandFrames { get; internal set; }
 
+        /// <summary>What the injected disturbances did, when the evaluation injected any; else null.</summary>
+        public DisturbanceReport Disturbance { get; internal set; }
+
         /// <summary>The fingers on the solved body, when the avatar has finger bones and the hands a controller profile; else null.</summary>
         public FingerReport Fingers { get; internal set; }
     }

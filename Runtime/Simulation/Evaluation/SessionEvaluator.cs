@@ -27,8 +27,10 @@ namespace AvatarGo.Simulation
         /// <param name="settings">Offset mode, controllers and grip of each hand, calibration thresholds.</param>
         /// <param name="avatar">The avatar; null uses the wearer's skeleton from the header.</param>
         /// <param name="onFrame">Optional: called after each solved frame after calibration (to write the pose out, for example).</param>
+        /// <param name="disturbance">Optional: losses, noise and teleports injected into every frame after calibration.</param>
         /// <exception cref="ArgumentException">The session has no ground truth and no avatar is given.</exception>
-        public static EvaluationReport Evaluate(SessionReader reader, PipelineSettings settings, HumanoidMap avatar = null, Action<SelfAvatarPipeline> onFrame = null)
+        public static EvaluationReport Evaluate(SessionReader reader, PipelineSettings settings, HumanoidMap avatar = null, Action<SelfAvatarPipeline> onFrame = null,
+            DisturbanceOptions disturbance = null)
         {
             if (reader == null) throw new ArgumentNullException(nameof(reader));
             if (settings == null) throw new ArgumentNullException(nameof(settings));
@@ -40,9 +42,11 @@ namespace AvatarGo.Simulation
             var truthAtCalibration = new RigidPose[HumanoidBones.Count];
             var avatarAtCalibration = new RigidPose[HumanoidBones.Count];
             bool calibrated = false;
+            DisturbanceTracker disturbed = null;
 
             while (reader.ReadFrame(frame))
             {
+                disturbed?.Disturb(frame);
                 pipeline.Update(frame);
                 if (pipeline.State != CalibrationState.Calibrated) continue;
                 HumanoidMap scaled = pipeline.ScaledAvatar;
@@ -57,6 +61,11 @@ namespace AvatarGo.Simulation
                         if (scaled.Has((HumanoidBone)b)) avatarAtCalibration[b] = pipeline.Pose.World[scaled[(HumanoidBone)b]];
                     }
                     if (pipeline.Hand(BodySide.Left).HasFingerIk || pipeline.Hand(BodySide.Right).HasFingerIk) report.Fingers = new FingerReport();
+                    if (disturbance != null && disturbance.IsActive)
+                    {
+                        report.Disturbance = new DisturbanceReport();
+                        disturbed = new DisturbanceTracker(header, disturbance, pipeline, report.Disturbance);
+                    }
                     continue;
                 }
                 SkeletonPose pose = pipeline.Pose;
@@ -93,6 +102,7 @@ namespace AvatarGo.Simulation
                     report.KneeAngleDegrees.Add(Math.Abs(avatarAngle - truthAngle));
                 }
                 if (report.Fingers != null) MeasureFingers(pipeline, report.Fingers);
+                disturbed?.Measure(frame);
             }
             if (!calibrated) report.CalibrationMessage = pipeline.LastCalibrationStep.Message;
             return report;

@@ -30,6 +30,16 @@ public sealed class EvaluateCommand : ICommand
           --grip MODE          hold (default), open, point, or input (the session's trigger and grip values)
           --hands palm|calibrated  the wrist from the palm on the controller (default, the paper's; needs
                                finger bones) or from the offset measured at the walk-in
+        Disturbances injected into every frame after calibration (and what they did: the largest frame-to-frame
+        jump of any end effector, also beyond the wearer's own motion and on recovery, and the end-effector
+        error while a device is lost or teleported, in the second after it comes back, and otherwise):
+          --dropout RATE       share of frames each device is lost, in bursts (e.g. 0.05)
+          --dropout-seconds S  the longest burst (default 1)
+          --noise-mm N         extra position noise per coordinate (standard deviation, mm)
+          --teleport M         teleports: a device jumps M metres for a moment
+          --teleport-seconds S how long a teleport lasts (default 0.1)
+          --teleports-per-minute N  per device (default 1)
+          --disturb-seed N     the disturbances' seed (default 1)
           --avatar FILE        use this BVH skeleton (its rest pose, any units) as the avatar instead
           --leg-scale S        make the avatar's legs S times as long (default 1)
           --arm-scale S        make the avatar's arms S times as long (default 1)
@@ -46,6 +56,7 @@ public sealed class EvaluateCommand : ICommand
         string avatarFile = a.String("avatar");
         float legScale = (float)a.Double("leg-scale", 1), armScale = (float)a.Double("arm-scale", 1);
         PipelineSettings settings = Settings(a, mode);
+        DisturbanceOptions disturbance = Disturbance(a);
         a.ThrowOnUnknown(1);
         if (!(legScale > 0.5f && legScale < 2f) || !(armScale > 0.5f && armScale < 2f)) throw new UsageException("limb scales must be between 0.5 and 2");
         EvaluationReport report;
@@ -55,7 +66,7 @@ public sealed class EvaluateCommand : ICommand
                 ? HumanoidNaming.Detect(BvhReader.ReadFile(avatarFile, new BvhReadOptions { ToMetres = true }).Skeleton)
                 : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no ground-truth skeleton; give --avatar FILE");
             if (legScale != 1f || armScale != 1f) avatar = Proportions.ScaleLimbs(avatar, legScale, armScale);
-            report = SessionEvaluator.Evaluate(reader, settings, avatar);
+            report = SessionEvaluator.Evaluate(reader, settings, avatar, null, disturbance);
         }
         if (report.Profile == null)
         {
@@ -95,6 +106,28 @@ public sealed class EvaluateCommand : ICommand
         return settings;
     }
 
+    /// <summary>The disturbances to inject (--dropout, --noise-mm, --teleport …), or null for none.</summary>
+    internal static DisturbanceOptions Disturbance(ArgReader a)
+    {
+        var d = new DisturbanceOptions
+        {
+            DropoutRate = (float)a.Double("dropout", 0),
+            DropoutMaxSeconds = (float)a.Double("dropout-seconds", 1),
+            NoiseMm = (float)a.Double("noise-mm", 0),
+            TeleportMetres = (float)a.Double("teleport", 0),
+            TeleportSeconds = (float)a.Double("teleport-seconds", 0.1),
+            TeleportsPerMinute = (float)a.Double("teleports-per-minute", 1),
+            Seed = a.Int("disturb-seed", 1),
+        };
+        if (!(d.DropoutRate >= 0 && d.DropoutRate <= 0.9)) throw new UsageException("--dropout must be between 0 and 0.9");
+        if (!(d.DropoutMaxSeconds > 0 && d.DropoutMaxSeconds <= 60)) throw new UsageException("--dropout-seconds must be between 0 and 60");
+        if (!(d.NoiseMm >= 0 && d.NoiseMm <= 1000)) throw new UsageException("--noise-mm must be between 0 and 1000");
+        if (!(d.TeleportMetres >= 0 && d.TeleportMetres <= 1000)) throw new UsageException("--teleport must be between 0 and 1000 m");
+        if (!(d.TeleportSeconds > 0 && d.TeleportSeconds <= 60)) throw new UsageException("--teleport-seconds must be between 0 and 60");
+        if (!(d.TeleportsPerMinute >= 0 && d.TeleportsPerMinute <= 600)) throw new UsageException("--teleports-per-minute must be between 0 and 600");
+        return d.IsActive ? d : null;
+    }
+
     internal static OffsetMode ParseMode(string mode) => mode switch
     {
         "exact" => OffsetMode.Exact,
@@ -114,6 +147,14 @@ public sealed class EvaluateCommand : ICommand
         Row(o, "knee angle (deg)", r.KneeAngleDegrees);
         foreach (var (bone, s) in r.JointPositionMm.OrderBy(p => p.Key))
             Row(o, "  " + bone, s);
+        if (r.Disturbance != null)
+        {
+            DisturbanceReport d = r.Disturbance;
+            o.WriteLine(string.Create(inv, $"disturbances ({d.DisturbedDeviceFrames} device-frames lost or teleported): largest end-effector jump {d.LargestJumpMm:0.0} mm per frame, {d.LargestExcessJumpMm:0.0} mm beyond the wearer's motion, {d.LargestRecoveryJumpMm:0.0} mm on recovery"));
+            Row(o, "  while disturbed (mm)", d.WhileDisturbedMm);
+            Row(o, "  after recovery (mm)", d.AfterRecoveryMm);
+            Row(o, "  undisturbed (mm)", d.UndisturbedMm);
+        }
         if (r.Fingers == null) return;
         o.WriteLine(string.Create(inv, $"fingers on the solved body ({r.Fingers.Frames} frames, {r.Fingers.OpenHandFrames} hand-frames open): deepest penetration {r.Fingers.MaxPenetrationMm:0.00} mm"));
         foreach (Finger f in Enum.GetValues<Finger>())
@@ -138,6 +179,16 @@ public sealed class EvaluateCommand : ICommand
             knee_angle_error_deg = r.KneeAngleDegrees.Median,
             unreached_hand_frames = r.UnreachedHandFrames,
             joints = r.JointPositionMm.OrderBy(p => p.Key).ToDictionary(p => p.Key.ToString(), p => new { median_mm = p.Value.Median, p95_mm = p.Value.P95, max_mm = p.Value.Max }),
+            disturbance = r.Disturbance == null ? null : new
+            {
+                disturbed_device_frames = r.Disturbance.DisturbedDeviceFrames,
+                largest_jump_mm = r.Disturbance.LargestJumpMm,
+                largest_excess_jump_mm = r.Disturbance.LargestExcessJumpMm,
+                largest_recovery_jump_mm = r.Disturbance.LargestRecoveryJumpMm,
+                while_disturbed_mm = Stats(r.Disturbance.WhileDisturbedMm),
+                after_recovery_mm = Stats(r.Disturbance.AfterRecoveryMm),
+                undisturbed_mm = Stats(r.Disturbance.UndisturbedMm),
+            },
             fingers = r.Fingers == null ? null : new
             {
                 frames = r.Fingers.Frames,
@@ -149,4 +200,7 @@ public sealed class EvaluateCommand : ICommand
         };
         return JsonSerializer.Serialize(doc, new JsonSerializerOptions { WriteIndented = true });
     }
+
+    private static object Stats(ErrorSeries s) =>
+        s.Count == 0 ? null : new { samples = s.Count, median = s.Median, mean = s.Mean, p95 = s.P95, max = s.Max };
 }
