@@ -14,6 +14,9 @@ namespace AvatarGo.Core
             set => _calibration = value ?? throw new ArgumentNullException(nameof(value));
         }
 
+        /// <summary>Which samples are rejected and how lost devices' parts are eased and brought back.</summary>
+        public TrackingSettings Tracking { get; } = new TrackingSettings();
+
         /// <summary>
         /// Exact offsets (the paper's method, the default) or the fixed-offset baseline; read when calibration completes
         /// or a profile is restored.

@@ -34,6 +34,9 @@ namespace AvatarGo.Core
         private readonly FingerSolver[] _fingers = new FingerSolver[2];
         private readonly RigidPose[] _controllerInWrist = new RigidPose[2];
         private BodyTargetMapper _mapper;
+        private SampleSanitizer _sanitizer;
+        private TrackingContinuity _continuity;
+        private DeviceSample[] _accepted, _effective;
         private FullBodyIk _ik;
         private SkeletonPose _pose, _lastGood;
         private BodyTargets _targets;
@@ -113,7 +116,7 @@ namespace AvatarGo.Core
                 if (State == CalibrationState.Calibrated) Setup(); // solving starts with the next frame
                 return step;
             }
-            Solve(samples, trigger, grip);
+            Solve(time, samples, trigger, grip);
             CalibrationStep last = _calibrator.LastStep;
             return new CalibrationStep(State, CalibrationStepOutcome.Waiting, last.Error, last.Message, null);
         }
@@ -190,6 +193,16 @@ namespace AvatarGo.Core
             }
             _mapper = new BodyTargetMapper(ActiveProfile, _devices, scaled, calibrationPose);
             _ik = new FullBodyIk(scaled, calibrationPose);
+            var roles = new PerRole<int>(-1);
+            foreach (DeviceRole role in BodyRoles.All) roles[role] = _calibrator.DeviceIndexOf(role);
+            var reach = new float[_devices.Length];
+            for (int d = 0; d < reach.Length; d++) reach[d] = -1f; // devices no role uses are not checked
+            Vector3 head0 = ActiveProfile.DeviceAtCalibration(DeviceRole.Head).Position;
+            foreach (DeviceRole role in BodyRoles.All) reach[roles[role]] = Vector3.Distance(ActiveProfile.DeviceAtCalibration(role).Position, head0);
+            _sanitizer = new SampleSanitizer(_devices.Length, roles[DeviceRole.Head], reach, Settings.Tracking);
+            _continuity = new TrackingContinuity(ActiveProfile, roles, scaled, calibrationPose, Settings.Tracking);
+            _accepted = new DeviceSample[_devices.Length];
+            _effective = new DeviceSample[_devices.Length];
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {
                 int s = (int)side;
@@ -222,12 +235,19 @@ namespace AvatarGo.Core
 
         // ---- Every frame once calibrated ----------------------------------------------------------------------
 
-        private void Solve(ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip)
+        private void Solve(double time, ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip)
         {
-            _mapper.Compute(samples, ref _targets);
+            // Bad samples out, lost devices' parts held and eased, returning ones blended back; without the HMD, freeze.
+            _sanitizer.Filter(time, samples, _accepted);
+            if (!_continuity.Apply(time, _accepted, _pose, _effective))
+            {
+                Freeze();
+                return;
+            }
+            _mapper.Compute(_effective, ref _targets);
             _report = _ik.Solve(in _targets, _pose);
-            PlaceHand(BodySide.Left, in _targets.LeftHand, _report.LeftHand, samples, trigger, grip);
-            PlaceHand(BodySide.Right, in _targets.RightHand, _report.RightHand, samples, trigger, grip);
+            PlaceHand(BodySide.Left, in _targets.LeftHand, _report.LeftHand, _effective, trigger, grip);
+            PlaceHand(BodySide.Right, in _targets.RightHand, _report.RightHand, _effective, trigger, grip);
             _pose.UpdateWorld();
             if (IsFinite(_pose)) _lastGood.CopyFrom(_pose);
             else _pose.CopyFrom(_lastGood); // never a NaN on a bone: keep the last good frame
@@ -243,7 +263,7 @@ namespace AvatarGo.Core
             RigidPose wrist = _pose.World[avatar[side == BodySide.Left ? HumanoidBone.LeftHand : HumanoidBone.RightHand]];
             RigidPose inHand = wrist * _controllerInWrist[s];
             int device = _calibrator.DeviceIndexOf(BodyRoles.Hand(side));
-            state.ControllerTracked = target.IsActive;
+            state.ControllerTracked = _continuity.IsTracked(BodyRoles.Hand(side));
             state.Reached = target.IsActive && reach.Reached;
             state.DistanceLeft = target.IsActive ? reach.DistanceLeft : 0f;
             state.DrawnInHand = !state.Reached;
@@ -258,6 +278,20 @@ namespace AvatarGo.Core
             state.Fingers.CopyFrom(fingers.Parameters);
             state.Holding = !fingers.OutOfReach && settings.Grip != GripMode.Open;
             _hands[s].Apply(fingers.Parameters, _pose);
+        }
+
+        // No HMD: the avatar keeps its last pose; the controllers stay in the hands.
+        private void Freeze()
+        {
+            HumanoidMap avatar = _calibrator.ScaledAvatar;
+            for (int s = 0; s < 2; s++)
+            {
+                HandState state = _handStates[s];
+                state.ControllerTracked = _continuity.IsTracked(BodyRoles.Hand(state.Side));
+                state.Reached = false;
+                state.DrawnInHand = true;
+                state.ControllerPose = _pose.World[avatar[HumanoidBones.OnSide(HumanoidBone.LeftHand, state.Side)]] * _controllerInWrist[s];
+            }
         }
 
         private static bool IsFinite(SkeletonPose pose)

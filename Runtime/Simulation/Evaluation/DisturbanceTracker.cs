@@ -34,6 +34,8 @@ namespace AvatarGo.Simulation
         public void Measure(SessionFrame frame)
         {
             HumanoidMap avatar = _pipeline.ScaledAvatar;
+            // A frame is undisturbed when no body device is lost, teleported or recovering: a loss moves other parts too.
+            bool calm = true;
             foreach (DeviceRole role in BodyRoles.All)
             {
                 int r = BodyRoles.IndexOf(role);
@@ -41,19 +43,40 @@ namespace AvatarGo.Simulation
                 if (disturbed) _report.DisturbedDeviceFrames++;
                 if (_wasDisturbed[r] && !disturbed) _recoveredAt[r] = frame.Time;
                 _wasDisturbed[r] = disturbed;
+                calm &= !disturbed && frame.Time - _recoveredAt[r] > DisturbanceReport.RecoverySeconds;
+            }
+            foreach (DeviceRole role in BodyRoles.All)
+            {
+                int r = BodyRoles.IndexOf(role);
+                bool disturbed = _wasDisturbed[r];
                 HumanoidBone bone = BodyRoles.JointOf(role);
                 if (!frame.HasTruth[(int)bone]) continue;
                 Vector3 solved = _pipeline.Pose.World[avatar[bone]].Position, truth = frame.Truth[(int)bone].Position;
                 double error = Vector3.Distance(solved, truth) * 1000.0;
                 bool recovering = frame.Time - _recoveredAt[r] <= DisturbanceReport.RecoverySeconds;
-                (disturbed ? _report.WhileDisturbedMm : recovering ? _report.AfterRecoveryMm : _report.UndisturbedMm).Add(error);
+                if (disturbed) _report.WhileDisturbedMm.Add(error);
+                else if (recovering) _report.AfterRecoveryMm.Add(error);
+                if (calm) _report.UndisturbedMm.Add(error);
                 if (!_first)
                 {
                     double jump = Vector3.Distance(solved, _lastSolved[r]) * 1000.0;
                     double excess = Vector3.Distance(solved - _lastSolved[r], truth - _lastTruth[r]) * 1000.0;
                     _report.LargestJumpMm = Math.Max(_report.LargestJumpMm, jump);
-                    _report.LargestExcessJumpMm = Math.Max(_report.LargestExcessJumpMm, excess);
-                    if (recovering && !disturbed) _report.LargestRecoveryJumpMm = Math.Max(_report.LargestRecoveryJumpMm, excess);
+                    if (excess > _report.LargestExcessJumpMm)
+                    {
+                        _report.LargestExcessJumpMm = excess;
+                        _report.LargestExcessJumpJoint = bone;
+                        _report.LargestExcessJumpTime = frame.Time;
+                    }
+                    // The jump a device's return causes: on its first frame back the whole displacement (the part was not
+                    // following the wearer the frame before), afterwards the displacement beyond the wearer's own.
+                    double recoveryJump = frame.Time == _recoveredAt[r] ? jump : excess;
+                    if (recovering && !disturbed && recoveryJump > _report.LargestRecoveryJumpMm)
+                    {
+                        _report.LargestRecoveryJumpMm = recoveryJump;
+                        _report.LargestRecoveryJumpJoint = bone;
+                        _report.LargestRecoveryJumpTime = frame.Time;
+                    }
                 }
                 _lastSolved[r] = solved;
                 _lastTruth[r] = truth;

@@ -1,0 +1,46 @@
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// How the pipeline treats bad and missing device data (a part of <see cref="PipelineSettings"/>): which samples are
+    /// rejected, how a lost device's part eases to a plausible pose, and how it comes back. Defaults chosen by measurement
+    /// (Documentation~/solver.md, "Tracking loss").
+    /// </summary>
+    public sealed class TrackingSettings
+    {
+        /// <summary>A sample that would move its device faster than this (m/s) since its last accepted one is a glitch, not motion (20 m/s: faster than a kick or a throw).</summary>
+        public float MaxSpeed { get; set; } = 20f;
+
+        /// <summary>A sample that would turn its device faster than this (°/s) is a glitch (3000 °/s: faster than a wrist flick).</summary>
+        public float MaxAngularSpeedDegrees { get; set; } = 3000f;
+
+        /// <summary>
+        /// A device rejected for a jump is taken back at its new place once its samples have agreed with each other there for
+        /// this long (0.5 s): the tracking space really moved (a recentre), it was not a glitch.
+        /// </summary>
+        public float ReacquireSeconds { get; set; } = 0.5f;
+
+        /// <summary>
+        /// A device farther from the HMD than this many times its distance at the walk-in (plus <see cref="BodyReachMargin"/>)
+        /// cannot be on the wearer's body and is rejected (1.3).
+        /// </summary>
+        public float BodyReachFactor { get; set; } = 1.3f;
+
+        /// <summary>Metres added to the reach bound (0.2).</summary>
+        public float BodyReachMargin { get; set; } = 0.2f;
+
+        /// <summary>A lost device's part first holds its last pose relative to the body this long (0.25 s): most losses are shorter.</summary>
+        public float HoldSeconds { get; set; } = 0.25f;
+
+        /// <summary>Then it eases to a plausible pose over this long (1 s): a lost foot under the hips on the floor, a lost hand hanging from the shoulder, a lost pelvis under the head.</summary>
+        public float EaseSeconds { get; set; } = 1f;
+
+        /// <summary>A device that comes back is blended in: the difference from where its part was shown decays with this time constant (0.1 s)…</summary>
+        public float RecoveryTimeConstant { get; set; } = 0.1f;
+
+        /// <summary>…but never faster than this (m/s, 1.2: 13 mm a frame at 90 Hz), so nothing snaps.</summary>
+        public float RecoveryMaxSpeed { get; set; } = 1.2f;
+
+        /// <summary>…nor turns faster than this (°/s, 360).</summary>
+        public float RecoveryMaxAngularSpeedDegrees { get; set; } = 360f;
+    }
+}
