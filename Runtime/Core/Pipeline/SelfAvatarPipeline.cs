@@ -266,8 +266,10 @@ namespace AvatarGo.Core
             state.ControllerTracked = _continuity.IsTracked(BodyRoles.Hand(side));
             state.Reached = target.IsActive && reach.Reached;
             state.DistanceLeft = target.IsActive ? reach.DistanceLeft : 0f;
-            state.DrawnInHand = !state.Reached;
-            state.ControllerPose = state.Reached ? samples[device].Pose : inHand;
+            // At the tracked pose only while the hand is really there; in the hand while it cannot reach, while the
+            // controller is lost, and while its part is blended back after a loss.
+            state.DrawnInHand = !(state.Reached && state.ControllerTracked && !_continuity.IsRecovering(BodyRoles.Hand(side)));
+            state.ControllerPose = state.DrawnInHand ? inHand : samples[device].Pose;
             HandSettings settings = Settings.Hand(side);
 
             FingerSolver fingers = _fingers[s];

@@ -24,7 +24,6 @@ namespace AvatarGo.Core
         private readonly PerRole<RoleState> _state = new PerRole<RoleState>();
         private readonly Quaternion _yaw0;
         private readonly Vector3 _hipsForwardLocal, _headForwardLocal;
-        private readonly float _floor;
         private readonly int _leftShoulder, _rightShoulder;
         private readonly float _leftArm, _rightArm;
         private readonly Quaternion _leftHang, _rightHang;
@@ -40,6 +39,8 @@ namespace AvatarGo.Core
             public RigidPose Shown;          // the joint pose fed last frame
             public Vector3 OffsetPosition;   // recovery: shown minus tracked
             public Quaternion OffsetRotation = Quaternion.Identity;
+            public Vector3 FromFeet, FromHead;  // the pelvis at its loss, from the feet and from the head, in the head's yaw frame
+            public Quaternion InHeadYaw;        // and its rotation in that frame
         }
 
         /// <summary>
@@ -62,7 +63,6 @@ namespace AvatarGo.Core
                 _joint0[role] = w[avatar[BodyRoles.JointOf(role)]];
                 _state[role] = new RoleState { Shown = _joint0[role] };
             }
-            _floor = profile.FloorHeight;
             Vector3 forward = Vector3.Transform(Vector3.UnitZ, profile.Placement.Rotation);
             _yaw0 = Yaw(forward);
             _hipsForwardLocal = Vector3.Transform(forward, Quaternion.Conjugate(_joint0[DeviceRole.Pelvis].Rotation));
@@ -169,6 +169,14 @@ namespace AvatarGo.Core
             s.Recovering = false;
             s.LostSince = time;
             s.HeldLocal = s.Shown.RelativeTo(reference);
+            if (role == DeviceRole.Pelvis)
+            {
+                Quaternion unyaw = Quaternion.Conjugate(Yaw(Vector3.Transform(_headForwardLocal, reference.Rotation)));
+                Vector3 feet = (_state[DeviceRole.LeftFoot].Shown.Position + _state[DeviceRole.RightFoot].Shown.Position) * 0.5f;
+                s.FromFeet = Vector3.Transform(s.Shown.Position - feet, unyaw);
+                s.FromHead = Vector3.Transform(s.Shown.Position - reference.Position, unyaw);
+                s.InHeadYaw = Quaternion.Normalize(unyaw * s.Shown.Rotation);
+            }
         }
 
         private RigidPose ReferenceOf(DeviceRole role) =>
@@ -180,16 +188,16 @@ namespace AvatarGo.Core
         {
             if (role == DeviceRole.Pelvis)
             {
-                // Under the head as at the calibration, turned with the head, and halfway toward above the feet.
+                // Where it was, at the loss, relative to the head and relative to the feet (as last shown: tracked, recovering
+                // or eased, so this never switches), half each, turned with the head: a crouch after the loss brings the
+                // hips halfway down with the head, a forward bend leaves them halfway over the feet. (Compared with a pose
+                // from the calibration's T-pose and with holding relative to the head alone: Documentation~/solver.md.)
                 RigidPose head = reference;
-                Quaternion turn = Yaw(Vector3.Transform(_headForwardLocal, head.Rotation)) * Quaternion.Conjugate(_yaw0);
-                Vector3 p = head.Position + Vector3.Transform(_joint0[DeviceRole.Pelvis].Position - _joint0[DeviceRole.Head].Position, turn);
-                // The feet as last shown (tracked, recovering or eased: always there, so this never switches).
+                RoleState pelvis = _state[DeviceRole.Pelvis];
+                Quaternion yaw = Yaw(Vector3.Transform(_headForwardLocal, head.Rotation));
                 Vector3 feet = (_state[DeviceRole.LeftFoot].Shown.Position + _state[DeviceRole.RightFoot].Shown.Position) * 0.5f;
-                Vector3 feet0 = (_joint0[DeviceRole.LeftFoot].Position + _joint0[DeviceRole.RightFoot].Position) * 0.5f;
-                Vector3 overFeet = feet + Vector3.Transform(_joint0[DeviceRole.Pelvis].Position - feet0, turn);
-                p = new Vector3((p.X + overFeet.X) * 0.5f, p.Y, (p.Z + overFeet.Z) * 0.5f);
-                return new RigidPose(p, Quaternion.Normalize(turn * _joint0[DeviceRole.Pelvis].Rotation));
+                Vector3 p = 0.5f * (feet + Vector3.Transform(pelvis.FromFeet, yaw)) + 0.5f * (head.Position + Vector3.Transform(pelvis.FromHead, yaw));
+                return new RigidPose(p, Quaternion.Normalize(yaw * pelvis.InHeadYaw));
             }
             RigidPose hips = reference;
             Quaternion bodyTurn = Yaw(Vector3.Transform(_hipsForwardLocal, hips.Rotation)) * Quaternion.Conjugate(_yaw0);
@@ -197,7 +205,7 @@ namespace AvatarGo.Core
             {
                 // Under the hips, where it stood at the calibration, on the floor.
                 Vector3 p = hips.Position + Vector3.Transform(_joint0[role].Position - _joint0[DeviceRole.Pelvis].Position, bodyTurn);
-                p.Y = _floor + (_joint0[role].Position.Y - _floor);
+                p.Y = _joint0[role].Position.Y; // the ankle's height when standing
                 return new RigidPose(p, Quaternion.Normalize(bodyTurn * _joint0[role].Rotation));
             }
             // A hand hangs from its shoulder (where the last frame put it), the arm straight down, turned with the body.

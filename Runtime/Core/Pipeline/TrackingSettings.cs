@@ -34,8 +34,8 @@ namespace AvatarGo.Core
         /// <summary>Then it eases to a plausible pose over this long (1 s): a lost foot under the hips on the floor, a lost hand hanging from the shoulder, a lost pelvis under the head.</summary>
         public float EaseSeconds { get; set; } = 1f;
 
-        /// <summary>A device that comes back is blended in: the difference from where its part was shown decays with this time constant (0.1 s)…</summary>
-        public float RecoveryTimeConstant { get; set; } = 0.1f;
+        /// <summary>A device that comes back is blended in: the difference from where its part was shown decays with this time constant (0.05 s)…</summary>
+        public float RecoveryTimeConstant { get; set; } = 0.05f;
 
         /// <summary>…but never faster than this (m/s, 1.2: 13 mm a frame at 90 Hz), so nothing snaps.</summary>
         public float RecoveryMaxSpeed { get; set; } = 1.2f;

@@ -123,20 +123,30 @@ namespace AvatarGo.Core.Tests
                 DeviceSample.Lost,
             };
             var trigger = new float[6];
-            foreach (DeviceSample garbage in bad)
-            {
-                wearer.Sample(samples, 0.001f, 0.1f);
-                foreach (DeviceRole role in new[] { DeviceRole.Pelvis, DeviceRole.Head, DeviceRole.LeftHand })
-                    samples[Array.IndexOf(Wearer.TrueRoles, role)] = garbage;
-                for (int d = 0; d < 6; d++) trigger[d] = float.NaN;
-                Assert.DoesNotThrow(() => pipeline.Update(t += 1 / 90.0, samples, trigger, default, null));
-                Assert.That(pipeline.Targets.HipsActive, Is.False);
-                Assert.That(pipeline.Hand(BodySide.Left).ControllerTracked, Is.False);
-                Approx.Near(goodHips, pipeline.Pose.World[hips], 1e-6f, 1e-3f, "the hips keep their last good pose");
-                foreach (RigidPose p in pipeline.Pose.World) Assert.That(p.IsValid, Is.True, "no NaN anywhere in the avatar");
-                foreach (RigidPose p in pipeline.Pose.Local) Assert.That(p.IsValid, Is.True, "nor in its local poses");
-                Assert.That(pipeline.Hand(BodySide.Left).ControllerPose.IsValid, Is.True);
-            }
+            foreach (bool withHmd in new[] { true, false })
+                foreach (DeviceSample garbage in bad)
+                {
+                    wearer.Sample(samples, 0.001f, 0.1f);
+                    foreach (DeviceRole role in withHmd ? new[] { DeviceRole.Pelvis, DeviceRole.Head, DeviceRole.LeftHand } : new[] { DeviceRole.Pelvis, DeviceRole.LeftHand })
+                        samples[Array.IndexOf(Wearer.TrueRoles, role)] = garbage;
+                    for (int d = 0; d < 6; d++) trigger[d] = float.NaN;
+                    var before = (RigidPose[])pipeline.Pose.World.Clone();
+                    Assert.DoesNotThrow(() => pipeline.Update(t += 1 / 90.0, samples, trigger, default, null));
+                    Assert.That(pipeline.Hand(BodySide.Left).ControllerTracked, Is.False);
+                    if (withHmd)
+                    {
+                        // No HMD, nothing to place the body by: the avatar keeps its last good pose exactly.
+                        for (int j = 0; j < before.Length; j++) Assert.That(pipeline.Pose.World[j], Is.EqualTo(before[j]), "frozen");
+                    }
+                    else
+                    {
+                        // The pelvis held relative to the head: within the wearer's motion of a frame.
+                        Approx.Near(goodHips.Position, pipeline.Pose.World[hips].Position, 0.03f, "the hips held near their last good pose");
+                    }
+                    foreach (RigidPose p in pipeline.Pose.World) Assert.That(p.IsValid, Is.True, "no NaN anywhere in the avatar");
+                    foreach (RigidPose p in pipeline.Pose.Local) Assert.That(p.IsValid, Is.True, "nor in its local poses");
+                    Assert.That(pipeline.Hand(BodySide.Left).ControllerPose.IsValid, Is.True);
+                }
             Assert.Throws<ArgumentException>(() => pipeline.Update(t, new DeviceSample[5], default, default, null), "a wrong sample count is a programming error");
         }
 

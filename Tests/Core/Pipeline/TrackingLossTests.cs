@@ -1,0 +1,210 @@
+using System;
+using System.Numerics;
+using NUnit.Framework;
+using AvatarGo.Simulation;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// Devices lost, glitching and coming back on recorded human motion: the avatar never snaps, lost parts ease to
+    /// plausible poses, a glitch is not followed, a recentred tracking space is, and frames without losses are as before.
+    /// </summary>
+    public class TrackingLossTests
+    {
+        private static readonly Lazy<string> MocapBank = new Lazy<string>(() => Sessions.Simulate("mocapbank_30fps.bvh"));
+
+        private static EvaluationReport Evaluate(string session, DisturbanceOptions disturbance)
+        {
+            using SessionReader reader = Sessions.Read(session);
+            return SessionEvaluator.Evaluate(reader, new PipelineSettings(), null, null, disturbance);
+        }
+
+        [TestCase(1)]
+        [TestCase(2)]
+        [TestCase(3)]
+        public void FivePercentBurstyLossesOnEveryDeviceComeBackWithoutAJump(int seed)
+        {
+            EvaluationReport clean = Evaluate(MocapBank.Value, null);
+            EvaluationReport lossy = Evaluate(MocapBank.Value, new DisturbanceOptions { DropoutRate = 0.05f, DropoutMaxSeconds = 1f, Seed = seed });
+            DisturbanceReport d = lossy.Disturbance;
+            int deviceFrames = 6 * lossy.Frames;
+            Assert.That(d.DisturbedDeviceFrames, Is.InRange(0.03 * deviceFrames, 0.08 * deviceFrames), "about 5 % of the device-frames lost");
+            Assert.That(d.AfterRecoveryMm.Count, Is.GreaterThan(0), "devices came back");
+            Assert.That(d.LargestRecoveryJumpMm, Is.LessThanOrEqualTo(20.0), $"{d.LargestRecoveryJumpJoint} at {d.LargestRecoveryJumpTime:0.00} s (mm per frame at 90 Hz)");
+            Assert.That(lossy.AllJointsMm.InvalidCount, Is.EqualTo(0), "never a NaN on a bone");
+            // Outside the losses (and the second after each), the end effectors are where they are without losses.
+            Assert.That(d.UndisturbedMm.Median, Is.EqualTo(clean.EndEffectorMm.Median).Within(0.2), "median (mm)");
+            Assert.That(d.UndisturbedMm.P95, Is.EqualTo(clean.EndEffectorMm.P95).Within(0.5), "p95 (mm)");
+        }
+
+        [Test]
+        public void TenMetreTeleportsAreNotFollowed()
+        {
+            EvaluationReport r = Evaluate(MocapBank.Value, new DisturbanceOptions { TeleportMetres = 10f, TeleportsPerMinute = 6f, TeleportSeconds = 0.1f });
+            Assert.That(r.Disturbance.WhileDisturbedMm.Count, Is.GreaterThan(0));
+            Assert.That(r.EndEffectorMm.Max, Is.LessThan(100.0), "mm: the glitching device's part is held, not sent 10 m away");
+            Assert.That(r.Disturbance.LargestJumpMm, Is.LessThan(60.0), "mm per frame");
+        }
+
+        // Replays the session with one role's device lost from `from` seconds after calibration for `seconds`, and calls
+        // check at the end of the loss with the pipeline and the frame.
+        private static void LoseFor(DeviceRole role, double from, double seconds, Action<SelfAvatarPipeline, SessionFrame> check)
+        {
+            int device = Array.IndexOf(SessionSimulator.DeviceRoles, role);
+            double calibratedAt = double.NaN;
+            bool checkedOnce = false;
+            string session = MocapBank.Value;
+            using SessionReader reader = Sessions.Read(session);
+            var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
+            SessionFrame frame = reader.CreateFrame();
+            while (reader.ReadFrame(frame))
+            {
+                if (!double.IsNaN(calibratedAt) && frame.Time >= calibratedAt + from && frame.Time < calibratedAt + from + seconds)
+                    frame.Samples[device] = new DeviceSample(frame.Samples[device].Pose, false);
+                pipeline.Update(frame);
+                if (double.IsNaN(calibratedAt) && pipeline.State == CalibrationState.Calibrated) calibratedAt = frame.Time;
+                if (!checkedOnce && !double.IsNaN(calibratedAt) && frame.Time >= calibratedAt + from + seconds - 1.0 / 90)
+                {
+                    check(pipeline, frame);
+                    checkedOnce = true;
+                }
+            }
+            Assert.That(checkedOnce, Is.True, "the loss ended within the session");
+        }
+
+        [Test]
+        public void ALostFootSettlesUnderTheHipsOnTheFloor()
+        {
+            LoseFor(DeviceRole.LeftFoot, 2.0, 2.5, (p, f) =>
+            {
+                Vector3 ankle = p.Pose.World[p.ScaledAvatar[HumanoidBone.LeftFoot]].Position;
+                Vector3 hips = p.Pose.World[p.ScaledAvatar[HumanoidBone.Hips]].Position;
+                float ankleAtCalibration = p.Profile.JointAtCalibration(DeviceRole.LeftFoot).Position.Y - p.Profile.FloorHeight;
+                Assert.That(ankle.Y - p.Profile.FloorHeight, Is.EqualTo(ankleAtCalibration).Within(0.03f), "on the floor (m)");
+                Assert.That(new Vector2(ankle.X - hips.X, ankle.Z - hips.Z).Length(), Is.LessThan(0.3f), "under the hips (m)");
+            });
+        }
+
+        [Test]
+        public void ALostHandHangsFromItsShoulder()
+        {
+            LoseFor(DeviceRole.RightHand, 2.0, 2.5, (p, f) =>
+            {
+                Vector3 wrist = p.Pose.World[p.ScaledAvatar[HumanoidBone.RightHand]].Position;
+                Vector3 elbow = p.Pose.World[p.ScaledAvatar[HumanoidBone.RightLowerArm]].Position;
+                Vector3 shoulder = p.Pose.World[p.ScaledAvatar[HumanoidBone.RightUpperArm]].Position;
+                float arm = Vector3.Distance(shoulder, elbow) + Vector3.Distance(elbow, wrist);
+                Assert.That(shoulder.Y - wrist.Y, Is.GreaterThan(0.85f * arm), "below the shoulder, nearly straight");
+                Assert.That(new Vector2(wrist.X - shoulder.X, wrist.Z - shoulder.Z).Length(), Is.LessThan(0.25f * arm), "hanging");
+                Assert.That(p.Hand(BodySide.Right).ControllerTracked, Is.False);
+                Assert.That(p.Hand(BodySide.Right).DrawnInHand, Is.True, "the controller is drawn in the hanging hand");
+            });
+        }
+
+        [Test]
+        public void ALostPelvisFollowsTheHeadAndTheFeet()
+        {
+            // The pelvis lost for 2 s starting every half second of the motion; its error over the last half second of each
+            // loss, against a pelvis left where it was lost (what a naive pipeline shows).
+            int device = Array.IndexOf(SessionSimulator.DeviceRoles, DeviceRole.Pelvis);
+            var followed = new ErrorSeries();
+            var leftBehind = new ErrorSeries();
+            for (double start = 1.0; start < 14.0; start += 0.5)
+            {
+                double calibratedAt = double.NaN;
+                Vector3 atLoss = default;
+                using SessionReader reader = Sessions.Read(MocapBank.Value);
+                var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
+                SessionFrame frame = reader.CreateFrame();
+                while (reader.ReadFrame(frame))
+                {
+                    bool lost = !double.IsNaN(calibratedAt) && frame.Time >= calibratedAt + start && frame.Time < calibratedAt + start + 2;
+                    if (lost) frame.Samples[device] = new DeviceSample(frame.Samples[device].Pose, false);
+                    pipeline.Update(frame);
+                    if (double.IsNaN(calibratedAt))
+                    {
+                        if (pipeline.State == CalibrationState.Calibrated) calibratedAt = frame.Time;
+                        continue;
+                    }
+                    Vector3 hips = pipeline.Pose.World[pipeline.ScaledAvatar[HumanoidBone.Hips]].Position;
+                    Vector3 truth = frame.Truth[(int)HumanoidBone.Hips].Position;
+                    if (!lost) atLoss = hips;
+                    else if (frame.Time >= calibratedAt + start + 1.5)
+                    {
+                        followed.Add(Vector3.Distance(hips, truth) * 1000);
+                        leftBehind.Add(Vector3.Distance(atLoss, truth) * 1000);
+                    }
+                }
+            }
+            Assert.That(followed.Count, Is.GreaterThan(1000));
+            Assert.That(followed.Median, Is.LessThan(0.5 * leftBehind.Median), $"mm: followed {followed.Median:0}, left behind {leftBehind.Median:0}");
+            Assert.That(followed.Median, Is.LessThan(150.0), "mm");
+        }
+
+        [Test]
+        public void WithoutTheHmdTheAvatarFreezesAndComesBackWithoutAJump()
+        {
+            int hmd = Array.IndexOf(SessionSimulator.DeviceRoles, DeviceRole.Head);
+            double calibratedAt = double.NaN;
+            RigidPose[] frozen = null;
+            Vector3 lastHead = default;
+            float largestStep = 0f;
+            using SessionReader reader = Sessions.Read(MocapBank.Value);
+            var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
+            SessionFrame frame = reader.CreateFrame();
+            while (reader.ReadFrame(frame))
+            {
+                bool lost = !double.IsNaN(calibratedAt) && frame.Time >= calibratedAt + 2 && frame.Time < calibratedAt + 3;
+                if (lost) for (int d = 0; d < frame.Samples.Length; d++) frame.Samples[d] = new DeviceSample(frame.Samples[d].Pose, d != hmd && frame.Samples[d].IsTracked);
+                pipeline.Update(frame);
+                if (double.IsNaN(calibratedAt))
+                {
+                    if (pipeline.State == CalibrationState.Calibrated) calibratedAt = frame.Time;
+                    continue;
+                }
+                if (lost)
+                {
+                    frozen = frozen ?? (RigidPose[])pipeline.Pose.World.Clone();
+                    for (int j = 0; j < frozen.Length; j++) Assert.That(pipeline.Pose.World[j], Is.EqualTo(frozen[j]), "frozen in the last good pose");
+                }
+                Vector3 head = pipeline.Pose.World[pipeline.ScaledAvatar[HumanoidBone.Head]].Position;
+                if (frame.Time > calibratedAt + 0.5) largestStep = Math.Max(largestStep, Vector3.Distance(head, lastHead));
+                lastHead = head;
+            }
+            Assert.That(frozen, Is.Not.Null);
+            Assert.That(largestStep, Is.LessThan(0.025f), "the head never jumps, at the freeze nor at the return (m per frame)");
+        }
+
+        [Test]
+        public void ARecentredTrackingSpaceIsFollowedAfterHalfASecond()
+        {
+            // From 2 s after calibration every device reports 3 m further along x (the runtime moved its origin).
+            double calibratedAt = double.NaN;
+            var shift = new Vector3(3f, 0f, 0f);
+            float errorAfter = float.NaN, largestStep = 0f;
+            Vector3 lastHips = default;
+            using SessionReader reader = Sessions.Read(MocapBank.Value);
+            var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
+            SessionFrame frame = reader.CreateFrame();
+            while (reader.ReadFrame(frame))
+            {
+                bool moved = !double.IsNaN(calibratedAt) && frame.Time >= calibratedAt + 2;
+                if (moved)
+                    for (int d = 0; d < frame.Samples.Length; d++)
+                        frame.Samples[d] = new DeviceSample(new RigidPose(frame.Samples[d].Pose.Position + shift, frame.Samples[d].Pose.Rotation), frame.Samples[d].IsTracked);
+                pipeline.Update(frame);
+                if (double.IsNaN(calibratedAt))
+                {
+                    if (pipeline.State == CalibrationState.Calibrated) calibratedAt = frame.Time;
+                    continue;
+                }
+                Vector3 hips = pipeline.Pose.World[pipeline.ScaledAvatar[HumanoidBone.Hips]].Position;
+                if (frame.Time > calibratedAt + 0.5) largestStep = Math.Max(largestStep, Vector3.Distance(hips, lastHips));
+                lastHips = hips;
+                if (moved && frame.Time >= calibratedAt + 6) errorAfter = Vector3.Distance(hips, frame.Truth[(int)HumanoidBone.Hips].Position + shift);
+            }
+            Assert.That(errorAfter, Is.LessThan(0.01f), "4 s later the avatar is where the devices now are (m)");
+            Assert.That(largestStep, Is.LessThan(0.025f), "it went there without jumping 3 m (m per frame)");
+        }
+    }
+}
