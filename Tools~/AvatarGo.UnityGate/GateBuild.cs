@@ -131,7 +131,17 @@ public static class GateBuild
             if (!File.Exists(dll)) continue;
             string target = Path.Combine(cacheDir, key);
             Directory.CreateDirectory(target);
-            File.Copy(dll, Path.Combine(target, assembly + ".dll"), overwrite: true);
+            // Builds running side by side may cache the same assembly: write to a temporary name, then move it in.
+            string temp = Path.Combine(target, $"{assembly}.{Guid.NewGuid():N}.tmp");
+            File.Copy(dll, temp);
+            try
+            {
+                File.Move(temp, Path.Combine(target, assembly + ".dll"), overwrite: false);
+            }
+            catch (IOException)
+            {
+                File.Delete(temp); // another build cached the same bytes first
+            }
         }
     }
 
