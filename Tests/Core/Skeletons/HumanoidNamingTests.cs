@@ -161,7 +161,7 @@ namespace AvatarGo.Core.Tests
             HumanoidMap map = HumanoidNaming.Detect(Build("Hips", "Spine<Hips", "Head<Spine", "LeftUpLeg<Hips", "LeftLeg<LeftUpLeg"));
             Assert.That(map.MissingRequired(), Does.Contain(HumanoidBone.LeftFoot));
             Assert.That(map.MissingRequired(), Does.Contain(HumanoidBone.RightHand));
-            Assert.That(map.MissingRequired(), Does.Not.Contain(HumanoidBone.Spine));
+            Assert.That(map.MissingRequired(), Has.No.Member(HumanoidBone.Spine));
         }
 
         [Test]

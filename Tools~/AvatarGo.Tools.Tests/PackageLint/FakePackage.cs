@@ -29,9 +29,9 @@ public sealed class FakePackage : IDisposable
             """);
         Write("README.md", "# Fake\n");
         Write("CHANGELOG.md", "# Changelog\n\n## [Unreleased]\n\n### Added\n- Something.\n\n## [0.1.0] - 2024-01-31\n\n### Fixed\n- A bug.\n");
-        Write("LICENSE.md", "MIT\n");
+        Write("LICENSE.md", "MIT License\n\nCopyright (c) 2024 Tests\n");
         Write("Third Party Notices.md", "None.\n");
-        Write("Documentation~/index.md", "# Manual\n");
+        Write("Documentation~/index.md", "# Manual\n\nHow to use it.\n");
         Write("Samples~/Demo/README.md", "Demo\n");
         Write("Tools~/AvatarGo.Core/AvatarGo.Core.csproj", "<Project />\n");
         Write("Tools~/AvatarGo.Core/bin/Release/x.dll", "");

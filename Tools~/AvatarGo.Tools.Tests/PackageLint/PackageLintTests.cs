@@ -61,6 +61,18 @@ public class PackageLintTests
     public void RequiredFilesExist() => AssertClean(_linter.CheckRequiredFiles());
 
     [Test]
+    public void TextFilesAreWellFormedAsPvsRequires() => AssertClean(_linter.CheckTextFiles());
+
+    [Test]
+    public void PathsFitPvsLimit() => AssertClean(_linter.CheckPathLengths());
+
+    [Test]
+    public void LicenseHasACopyrightLine() => AssertClean(_linter.CheckLicense());
+
+    [Test]
+    public void DocumentationHasMarkdownPages() => AssertClean(_linter.CheckDocumentation());
+
+    [Test]
     public void TheAvatarGoCoreAsmdefIsChecked()
     {
         // Guards against the lint silently checking nothing (e.g. a listing that lost the asmdefs).

@@ -86,8 +86,8 @@ public sealed class PackageLinter
     /// <summary>
     /// Every file that would ship, relative to <see cref="Root"/> with '/' separators: when the root is in a
     /// git checkout, tracked files plus untracked files that are not ignored (a fresh clone is what a git
-    /// install sees); otherwise every file on disk, skipping dot entries and `~` folders (which no check
-    /// needs listed; bin/ and obj/ of the Tools~ builds live there). Deleted-but-staged files are dropped.
+    /// install sees); otherwise every file on disk, skipping dot entries and what .gitignore leaves out of a clone
+    /// (bin/ and obj/ inside `~` folders, Tools~/out). Deleted-but-staged files are dropped.
     /// </summary>
     public IReadOnlyList<string> Files => _files ??= ListFiles();
 
@@ -725,6 +725,88 @@ public sealed class PackageLinter
     }
 
     // ---------------------------------------------------------------------------------------------
+    // Package Validation Suite file rules
+
+    /// <summary>
+    /// The extensions PVS checks as text (FileExt.TextFile in needle-mirror/com.unity.package-validation-suite
+    /// Lib/PvpXray/Verifier.cs). .meta files (Unity writes "userData: " with a trailing space), .bvh/.agsession data
+    /// (byte-exact on purpose, see .gitattributes) and Unity YAML assets are not in it.
+    /// </summary>
+    public static readonly IReadOnlySet<string> PvsTextExtensions = new HashSet<string>(StringComparer.OrdinalIgnoreCase)
+    {
+        ".asmdef", ".asmref", ".cginc", ".compute", ".cpp", ".cs", ".h", ".hlsl", ".java", ".js", ".json", ".m", ".md", ".mm",
+        ".plist", ".py", ".shader", ".txt", ".uss", ".uxml", ".yaml", ".yml",
+    };
+
+    /// <summary>
+    /// PVP-120..125 (WellFormedTextFilesVerifier): every text file of the package, `~` folders included (a git install
+    /// and the registry tarball ship them too), is well-formed UTF-8 with no carriage return (CRLF), no tab, no
+    /// trailing space or tab and no byte-order mark anywhere.
+    /// </summary>
+    public List<string> CheckTextFiles()
+    {
+        var problems = new List<string>();
+        var strict = new UTF8Encoding(encoderShouldEmitUTF8Identifier: false, throwOnInvalidBytes: true);
+        foreach (string f in Files.Where(f => PvsTextExtensions.Contains(Path.GetExtension(f))))
+        {
+            byte[] bytes = File.ReadAllBytes(Path.Combine(Root, f));
+            string text;
+            try
+            {
+                text = strict.GetString(bytes);
+            }
+            catch (DecoderFallbackException)
+            {
+                problems.Add($"{f}: not well-formed UTF-8 (PVP-120)");
+                continue;
+            }
+            if (text.Contains('\uFEFF')) problems.Add($"{f}: UTF-8 byte-order mark (PVP-125)");
+            string[] lines = text.Split('\n');
+            int cr = Array.FindIndex(lines, l => l.Contains('\r'));
+            if (cr >= 0) problems.Add($"{f}:{cr + 1}: carriage return (CRLF line ending; PVP-121)");
+            int tab = Array.FindIndex(lines, l => l.Contains('\t'));
+            if (tab >= 0) problems.Add($"{f}:{tab + 1}: tab character (PVP-122)");
+            int trailing = Array.FindIndex(lines, l => l.TrimEnd('\r').Length > 0 && l.TrimEnd('\r') is var t && (t[^1] == ' ' || t[^1] == '\t'));
+            if (trailing >= 0) problems.Add($"{f}:{trailing + 1}: trailing whitespace (PVP-124)");
+        }
+        return problems;
+    }
+
+    /// <summary>PVS US-0113 / PVP-22-1: every path, relative to the package root, is at most 140 characters.</summary>
+    public List<string> CheckPathLengths() =>
+        Files.Where(f => f.Length > 140).Select(f => $"{f}: {f.Length} characters, PVS allows 140 (PVP-22-1)").ToList();
+
+    private static readonly Regex CopyrightLine = new(@"^\s*(?:.+\s)?copyright\s+(?:\(c\)|©)\s+\d{4}(?:\s*[-–]\s*\d{4})?\s+\S.*$",
+        RegexOptions.IgnoreCase | RegexOptions.CultureInvariant);
+
+    /// <summary>
+    /// PVS US-0032 / PVP-30/31: LICENSE.md exists and has a copyright line ("Copyright (c) 2026 Holder" or with ©).
+    /// PVS's own form (first line "&lt;package name&gt; copyright © YEAR ...") is only a warning there and not required here.
+    /// </summary>
+    public List<string> CheckLicense()
+    {
+        string path = Path.Combine(Root, "LICENSE.md");
+        if (!File.Exists(path)) return new List<string> { "LICENSE.md: missing (PVP-30-1)" };
+        return File.ReadLines(path).Any(l => CopyrightLine.IsMatch(l))
+            ? new List<string>()
+            : new List<string> { "LICENSE.md: no copyright line such as 'Copyright (c) 2026 AvatarGo contributors' (PVP-31-1)" };
+    }
+
+    /// <summary>PVS US-0040 / PVP-60..62: a Documentation~ folder whose .md files each hold at least 10 characters, with a lowercase index.md.</summary>
+    public List<string> CheckDocumentation()
+    {
+        var problems = new List<string>();
+        string dir = Path.Combine(Root, "Documentation~");
+        string[] docs = Directory.Exists(dir) ? Directory.GetFiles(dir, "*.md", SearchOption.AllDirectories) : Array.Empty<string>();
+        if (docs.Length == 0) return new List<string> { "Documentation~: no .md file (PVP-60-1)" };
+        foreach (string d in docs.Where(d => File.ReadAllText(d).Trim().Length < 10))
+            problems.Add($"{Path.GetRelativePath(Root, d).Replace('\\', '/')}: fewer than 10 characters (PVP-61-1)");
+        if (!docs.Any(d => Path.GetFileName(d) == "index.md"))
+            problems.Add("Documentation~/index.md: missing or not lowercase (PVP-62-1)");
+        return problems;
+    }
+
+    // ---------------------------------------------------------------------------------------------
     // Required files
 
     /// <summary>The files every release needs exist.</summary>
@@ -736,7 +818,8 @@ public sealed class PackageLinter
         CheckMetas().Concat(CheckNoBuildArtifacts()).Concat(CheckAsmdefs()).Concat(CheckAsmdefCoverage())
             .Concat(CheckPackageJson()).Concat(CheckChangelog()).Concat(CheckCoreIsEngineFree())
             .Concat(CheckOnePublicTypePerFile()).Concat(CheckRequiredFiles()).Concat(CheckAssemblyBoundaries())
-            .Concat(CheckInternalsVisibleToInSource()).ToList();
+            .Concat(CheckInternalsVisibleToInSource()).Concat(CheckTextFiles()).Concat(CheckPathLengths()).Concat(CheckLicense())
+            .Concat(CheckDocumentation()).ToList();
 
     // ---------------------------------------------------------------------------------------------
     // Helpers
@@ -829,7 +912,9 @@ public sealed class PackageLinter
         foreach (string d in Directory.GetDirectories(dir))
         {
             string name = Path.GetFileName(d);
-            if (name.StartsWith(".", StringComparison.Ordinal) || name.EndsWith("~", StringComparison.Ordinal)) continue;
+            // Inside `~` folders, the Tools~ builds' output is ignored by git (.gitignore); outside, CheckNoBuildArtifacts reports it.
+            bool inTilde = prefix.Split('/').Any(p => p.EndsWith("~", StringComparison.Ordinal));
+            if (name.StartsWith(".", StringComparison.Ordinal) || (inTilde && name is "bin" or "obj") || prefix + name == "Tools~/out") continue;
             Walk(d, prefix + name + "/", files);
         }
     }

@@ -37,7 +37,8 @@ public class PackageLinterSelfTests
         Assert.That(problems, Is.Empty, PackageLinter.Describe(problems));
         Assert.That(linter.ListingSource, Is.EqualTo("walk"));
         Assert.That(linter.Files, Has.Member("Runtime/Core/Math/Thing.cs.meta"));
-        Assert.That(linter.Files.Any(f => f.StartsWith("Tools~/", StringComparison.Ordinal)), Is.False);
+        Assert.That(linter.Files, Has.Member("Tools~/AvatarGo.Core/AvatarGo.Core.csproj"), "`~` folders ship too (PVS checks their text files)");
+        Assert.That(linter.Files.Any(f => f.Contains("/bin/", StringComparison.Ordinal)), Is.False, "build output is ignored, as .gitignore does");
     }
 
     [Test]
@@ -246,6 +247,64 @@ public class PackageLinterSelfTests
     {
         string found = string.Join(",", PackageLinter.PublicTopLevelTypes(source));
         Assert.That(found, Is.EqualTo(expected));
+    }
+
+    [Test]
+    public void MalformedTextFilesAreReported()
+    {
+        File.WriteAllText(Path.Combine(_pkg.Root, "Runtime/Core/Math/Thing.cs"), "namespace AvatarGo.Core\r\n{\r\n    public struct Thing { }\r\n}\r\n");
+        File.WriteAllBytes(Path.Combine(_pkg.Root, "README.md"), new byte[] { 0xEF, 0xBB, 0xBF, (byte)'#', (byte)'\n' });
+        _pkg.Write("Documentation~/index.md", "# Manual\n\nTrailing space here \n");
+        _pkg.Write("Tools~/notes.txt", "a\tb\n");
+        File.WriteAllBytes(Path.Combine(_pkg.Root, "CHANGELOG.md"), new byte[] { (byte)'#', 0xC3, (byte)'\n' });
+        List<string> problems = _pkg.Linter.CheckTextFiles();
+        AssertReported(problems, "Runtime/Core/Math/Thing.cs:1: carriage return", "README.md: UTF-8 byte-order mark",
+            "Documentation~/index.md:3: trailing whitespace", "Tools~/notes.txt:1: tab character", "CHANGELOG.md: not well-formed UTF-8");
+        Assert.That(problems, Has.Count.EqualTo(5), PackageLinter.Describe(problems));
+    }
+
+    [Test]
+    public void DataAndMetaFilesAreOutsideThePvsTextRules()
+    {
+        File.WriteAllText(Path.Combine(_pkg.Root, "Samples~/Demo/clip.bvh"), "HIERARCHY\r\n\tROOT Hips \r\n"); // byte-exact mocap data (.gitattributes -text)
+        _pkg.Write("README.md.meta", FakePackage.Meta("README.md", folder: false) + "  assetBundleName: \n"); // Unity writes these
+        List<string> problems = _pkg.Linter.CheckTextFiles();
+        Assert.That(problems, Is.Empty, PackageLinter.Describe(problems));
+    }
+
+    [Test]
+    public void PathLongerThan140IsReported()
+    {
+        string path = "Runtime/" + new string('a', 130) + ".cs";
+        _pkg.Write(path, "namespace AvatarGo { }\n");
+        AssertReported(_pkg.Linter.CheckPathLengths(), path + ": 141 characters, PVS allows 140");
+    }
+
+    [TestCase("MIT License\n\nPermission is hereby granted.\n", "LICENSE.md: no copyright line")]
+    [TestCase(null, "LICENSE.md: missing")]
+    public void LicenseWithoutCopyrightIsReported(string text, string expected)
+    {
+        if (text == null) _pkg.Delete("LICENSE.md");
+        else _pkg.Write("LICENSE.md", text);
+        AssertReported(_pkg.Linter.CheckLicense(), expected);
+    }
+
+    [Test]
+    public void CopyrightWithTheSignOrAYearRangeIsAccepted()
+    {
+        _pkg.Write("LICENSE.md", "com.avatargo.selfavatar copyright © 2024-2026 AvatarGo contributors\n");
+        Assert.That(_pkg.Linter.CheckLicense(), Is.Empty);
+    }
+
+    [Test]
+    public void DocumentationWithoutPagesIsReported()
+    {
+        _pkg.Write("Documentation~/index.md", "# Doc\n");
+        AssertReported(_pkg.Linter.CheckDocumentation(), "Documentation~/index.md: fewer than 10 characters");
+        _pkg.Delete("Documentation~/index.md");
+        AssertReported(_pkg.Linter.CheckDocumentation(), "Documentation~: no .md file");
+        _pkg.Write("Documentation~/Index.md", "# Manual\n\nHow to use it.\n");
+        AssertReported(_pkg.Linter.CheckDocumentation(), "Documentation~/index.md: missing or not lowercase");
     }
 
     [Test]

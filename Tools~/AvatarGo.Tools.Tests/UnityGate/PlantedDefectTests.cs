@@ -1,0 +1,143 @@
+using System.Collections.Generic;
+using System.Linq;
+using AvatarGo.UnityGate;
+using NUnit.Framework;
+
+namespace AvatarGo.Tools.Tests.UnityGate;
+
+/// <summary>
+/// Each defect the gate exists to catch, planted in a temporary copy of the package; the gate must fail with that
+/// defect's own diagnostic (code, file and member), so no test can pass for the wrong reason. Each builds only the
+/// configurations and assemblies the defect concerns, to keep the default suite quick.
+/// </summary>
+[TestFixture]
+public class PlantedDefectTests
+{
+    private const string Bridge = "Runtime/Bridge/UnityConversions.cs";
+    private PackageCopy _copy;
+
+    [SetUp]
+    public void CopyPackage() => _copy = new PackageCopy();
+
+    [TearDown]
+    public void DeleteCopy() => _copy.Dispose();
+
+    private GateResult Gate(string[] configurations, params string[] assemblies) =>
+        GateBuild.Run(_copy.Root, AvatarGo.UnityGate.Program.NuGetPackageRoot, configurations.Select(UnityConfiguration.Named), _copy.OutDir,
+            assemblies.Length > 0 ? assemblies : null, GateCache.Dir);
+
+    private static GateDiagnostic AssertSingleError(GateResult result, string code, string file, params string[] fragments)
+    {
+        Assert.That(result.Succeeded, Is.False, "the planted defect compiled: " + result.Describe());
+        List<GateDiagnostic> matching = result.Errors.Where(e => e.Code == code && e.File == file && fragments.All(f => e.Message.Contains(f))).ToList();
+        Assert.That(matching, Is.Not.Empty, $"expected {code} in {file} mentioning {string.Join(", ", fragments)}; got " + result.Describe());
+        return matching[0];
+    }
+
+    [Test]
+    public void MisspelledUnityMemberInARuntimeFileFails()
+    {
+        _copy.Replace(Bridge, "transform.localPosition = pose.Position.ToUnity();", "transform.localPositon = pose.Position.ToUnity();");
+        GateResult result = Gate(new[] { "player-2021.3" }, "AvatarGo");
+        AssertSingleError(result, "CS1061", Bridge, "'Transform' does not contain a definition for 'localPositon'");
+        Assert.That(result.Errors.Select(e => e.Code).Distinct(), Is.EqualTo(new[] { "CS1061" }), result.Describe());
+    }
+
+    [Test]
+    public void CallToAMemberUnityLacksFails()
+    {
+        _copy.Write("Runtime/Bridge/PlantedGlobalPose.cs",
+            "namespace AvatarGo\n{\n    internal static class PlantedGlobalPose\n    {\n" +
+            "        internal static void Apply(UnityEngine.Transform t, UnityEngine.Vector3 p, UnityEngine.Quaternion q) => t.SetGlobalPose(p, q);\n    }\n}\n");
+        GateResult result = Gate(new[] { "editor-2021.3" }, "AvatarGo");
+        AssertSingleError(result, "CS1061", "Runtime/Bridge/PlantedGlobalPose.cs", "'Transform' does not contain a definition for 'SetGlobalPose'");
+    }
+
+    [Test]
+    public void EditorApiInARuntimeFileWithoutTheGuardFailsInThePlayerBuild()
+    {
+        // The package uses no UnityEditor API yet, so the copy's surface gets one real member for the plant,
+        // declared (with its source) as Unity declares it.
+        _copy.Write("Tools~/UnitySurface/UnityEditor/EditorApplication.cs",
+            "namespace UnityEditor\n{\n    // UnityCsReference@2021.3 Editor/Mono/EditorApplication.bindings.cs\n" +
+            "    public sealed class EditorApplication\n    {\n        public static bool isPlaying { get => throw null; set => throw null; }\n    }\n}\n");
+        _copy.Write("Runtime/Bridge/PlantedEditorCall.cs",
+            "namespace AvatarGo\n{\n    internal static class PlantedEditorCall\n    {\n" +
+            "        internal static bool Playing() => UnityEditor.EditorApplication.isPlaying;\n    }\n}\n");
+        _copy.Write("Runtime/Bridge/PlantedGuardedEditorCall.cs",
+            "namespace AvatarGo\n{\n    internal static class PlantedGuardedEditorCall\n    {\n" +
+            "#if UNITY_EDITOR\n        internal static bool Playing() => UnityEditor.EditorApplication.isPlaying;\n#else\n        internal static bool Playing() => true;\n#endif\n    }\n}\n");
+        GateResult result = Gate(new[] { "editor-2021.3", "player-2021.3" }, "AvatarGo");
+        GateDiagnostic error = AssertSingleError(result, "CS0103", "Runtime/Bridge/PlantedEditorCall.cs", "The name 'UnityEditor' does not exist in the current context");
+        Assert.That(error.Configuration, Is.EqualTo("player-2021.3"), "the Editor references UnityEditor from every assembly: only the player build catches it");
+        Assert.That(result.Errors.Where(e => e.File == "Runtime/Bridge/PlantedGuardedEditorCall.cs"), Is.Empty, "the #if UNITY_EDITOR guard keeps the player build clean");
+        Assert.That(result.Errors, Has.Count.EqualTo(1), result.Describe());
+    }
+
+    [Test]
+    public void AnimatePhysicsFailsFromUnity2023()
+    {
+        // No package code uses the Animator yet (the IK driver will): the copy's surface gets the enum as both versions
+        // declare it, and the plant uses the 2021.3 name that 2023.1 made an error.
+        _copy.Write("Tools~/UnitySurface/UnityEngine/AnimationModule/AnimatorUpdateMode.cs",
+            "namespace UnityEngine\n{\n    // UnityCsReference@2021.3 Modules/Animation/ScriptBindings/Animator.bindings.cs\n" +
+            "    public enum AnimatorUpdateMode\n    {\n        Normal = 0,\n#if UNITY_2023_1_OR_NEWER\n        Fixed = 1,\n#endif\n        UnscaledTime = 2,\n" +
+            "#if UNITY_2023_1_OR_NEWER\n        // UnityCsReference@2023.1 Modules/Animation/ScriptBindings/Animator.bindings.cs\n" +
+            "        [System.Obsolete(\"AnimatePhysics is now Fixed (UnityUpgradable) -> Fixed\", true)]\n#endif\n        AnimatePhysics = 1,\n    }\n}\n");
+        _copy.Write("Runtime/Bridge/PlantedUpdateMode.cs",
+            "namespace AvatarGo\n{\n    internal static class PlantedUpdateMode\n    {\n" +
+            "        internal static UnityEngine.AnimatorUpdateMode Physics => UnityEngine.AnimatorUpdateMode.AnimatePhysics;\n    }\n}\n");
+        GateResult result = Gate(new[] { "editor-2021.3", "editor-6000.5" }, "AvatarGo");
+        GateDiagnostic error = AssertSingleError(result, "CS0619", "Runtime/Bridge/PlantedUpdateMode.cs", "'AnimatorUpdateMode.AnimatePhysics' is obsolete");
+        Assert.That(error.Configuration, Is.EqualTo("editor-6000.5"), "2021.3 has AnimatePhysics; only the current editor rejects it");
+        Assert.That(result.Errors, Has.Count.EqualTo(1), result.Describe());
+    }
+
+    [Test]
+    public void TestUsingACoreInternalWithoutInternalsVisibleToFails()
+    {
+        _copy.Replace("Runtime/Core/AssemblyInfo.cs", "[assembly: InternalsVisibleTo(\"AvatarGo.Core.Tests\")]", "");
+        _copy.Write("Tests/Core/Planted/PlantedInternalTests.cs",
+            "using NUnit.Framework;\n\nnamespace AvatarGo.Core.Tests\n{\n    public class PlantedInternalTests\n    {\n" +
+            "        [Test]\n        public void UsesAnInternal() => Assert.That(AvatarGo.Core.BvhClip.ToUnity(System.Numerics.Vector3.UnitX).X, Is.EqualTo(-1f));\n    }\n}\n");
+        GateResult result = Gate(new[] { "editor-2021.3" }, "AvatarGo.Core.Tests");
+        // Against a compiled AvatarGo.Core (as Unity builds it), internals without InternalsVisibleTo are simply not there: CS0117.
+        AssertSingleError(result, "CS0117", "Tests/Core/Planted/PlantedInternalTests.cs", "'BvhClip' does not contain a definition for 'ToUnity'");
+    }
+
+    [Test]
+    public void DotNetApiBeyondNetStandard21InATestFails()
+    {
+        _copy.Write("Tests/Core/Planted/PlantedApiTests.cs",
+            "using NUnit.Framework;\n\nnamespace AvatarGo.Core.Tests\n{\n    public class PlantedApiTests\n    {\n" +
+            "        [Test]\n        public void UsesANet6Api() => Assert.That(System.Math.Clamp(System.Random.Shared.Next(), 0, 1), Is.LessThanOrEqualTo(1));\n    }\n}\n");
+        GateResult result = Gate(new[] { "editor-2021.3" }, "AvatarGo.Core.Tests");
+        AssertSingleError(result, "CS0117", "Tests/Core/Planted/PlantedApiTests.cs", "'Random' does not contain a definition for 'Shared'");
+    }
+
+    [TestCase("\"Unity.Mathematics\"", "Runtime/AvatarGo.asmdef: reference 'Unity.Mathematics' is no assembly")]
+    [TestCase("\"GUID:0123456789abcdef0123456789abcdef\"", "Runtime/AvatarGo.asmdef: reference GUID:0123456789abcdef0123456789abcdef is the GUID of no asmdef")]
+    public void AsmdefReferenceToAnAssemblyThatDoesNotExistFails(string reference, string message)
+    {
+        _copy.Replace("Runtime/AvatarGo.asmdef", "\"AvatarGo.Core\"", "\"AvatarGo.Core\",\n        " + reference);
+        var e = Assert.Throws<GateException>(() => Gate(new[] { "editor-2021.3" }));
+        Assert.That(e.Message, Does.Contain(message));
+    }
+
+    [Test]
+    public void UsingAModuleWithoutItsPackageDependencyIsReported()
+    {
+        _copy.Write("Tools~/UnitySurface/UnityEngine/AnimationModule/AnimatorCullingMode.cs",
+            "namespace UnityEngine\n{\n    // UnityCsReference@2021.3 Modules/Animation/ScriptBindings/Animator.bindings.cs\n" +
+            "    public enum AnimatorCullingMode\n    {\n        AlwaysAnimate = 0,\n        CullUpdateTransforms = 1,\n        CullCompletely = 2,\n    }\n}\n");
+        _copy.Write("Runtime/Bridge/PlantedCulling.cs",
+            "namespace AvatarGo\n{\n    internal static class PlantedCulling\n    {\n" +
+            "        internal static UnityEngine.AnimatorCullingMode Mode => UnityEngine.AnimatorCullingMode.AlwaysAnimate;\n    }\n}\n");
+        GateResult result = Gate(new[] { "editor-2021.3" }, "AvatarGo");
+        Assert.That(result.Succeeded, Is.True, result.Describe());
+        List<string> problems = ModuleDependencies.Check(_copy.Root, result);
+        Assert.That(problems, Has.Member("package.json: the package uses UnityEngine.AnimationModule (T:UnityEngine.AnimatorCullingMode) but \"dependencies\" lacks \"com.unity.modules.animation\": \"1.0.0\""));
+        _copy.Replace("package.json", "\"license\": \"MIT\",", "\"license\": \"MIT\",\n  \"dependencies\": { \"com.unity.modules.animation\": \"1.0.0\" },");
+        Assert.That(ModuleDependencies.Check(_copy.Root, result), Is.Empty);
+    }
+}
