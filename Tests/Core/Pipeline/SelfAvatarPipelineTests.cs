@@ -14,7 +14,9 @@ namespace AvatarGo.Core.Tests
     /// </summary>
     public class SelfAvatarPipelineTests
     {
-        private static readonly Lazy<string> MocapBank = new Lazy<string>(() => Sessions.Simulate("mocapbank_30fps.bvh"));
+        // Simulated once for the fixture (not System.Lazy: Unity's NUnit, built for .NET 3.5, declares its own Lazy<T>).
+        private static string _mocapBank;
+        private static string MocapBank => _mocapBank ?? (_mocapBank = Sessions.Simulate("mocapbank_30fps.bvh"));
 
         private static ControllerProfile Profile(string name) =>
             ControllerProfile.Parse(File.ReadAllText(TestData.InPackage("Runtime/ControllerProfiles/" + name + ".json")));
@@ -29,7 +31,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void ASessionCalibratesWithItsTwoPresses()
         {
-            SelfAvatarPipeline p = Sessions.Replay(MocapBank.Value);
+            SelfAvatarPipeline p = Sessions.Replay(MocapBank);
             Assert.That(p.State, Is.EqualTo(CalibrationState.Calibrated), p.LastCalibrationStep.ToString());
             Assert.That(p.Pose, Is.SameAs(p.Pose), "one pose object while calibrated");
             Assert.That(p.Pose.Skeleton, Is.SameAs(p.ScaledAvatar.Skeleton));
@@ -39,7 +41,7 @@ namespace AvatarGo.Core.Tests
         public void BothControllersPressingInTheSameFrameWithNoSecondPressEndsNotCalibrated()
         {
             // Both triggers at the T-pose, in one frame; the walk-in press removed.
-            string session = Sessions.Edit(MocapBank.Value, (i, f) =>
+            string session = Sessions.Edit(MocapBank, (i, f) =>
             {
                 bool tposePress = f.Events.Exists(e => e.Kind == DeviceEventKind.TriggerPressed && e.DeviceId == 1);
                 f.Events.RemoveAll(e => e.Kind == DeviceEventKind.TriggerPressed);
@@ -58,7 +60,7 @@ namespace AvatarGo.Core.Tests
         public void PressesFromATrackerEndNotCalibrated()
         {
             // Every press attributed to device 4, the pelvis tracker of a simulated session.
-            string session = Sessions.Edit(MocapBank.Value, (i, f) =>
+            string session = Sessions.Edit(MocapBank, (i, f) =>
             {
                 for (int e = 0; e < f.Events.Count; e++) f.Events[e] = new DeviceEvent(4, f.Events[e].Kind);
             });
@@ -72,7 +74,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void ARestoredProfileSolvesLikeTheCalibrationItCameFrom()
         {
-            string session = MocapBank.Value;
+            string session = MocapBank;
             SelfAvatarPipeline calibrated = null, restored = null;
             var solvedA = new List<RigidPose>();
             var solvedB = new List<RigidPose>();

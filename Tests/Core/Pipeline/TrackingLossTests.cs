@@ -11,7 +11,9 @@ namespace AvatarGo.Core.Tests
     /// </summary>
     public class TrackingLossTests
     {
-        private static readonly Lazy<string> MocapBank = new Lazy<string>(() => Sessions.Simulate("mocapbank_30fps.bvh"));
+        // Simulated once for the fixture (not System.Lazy: Unity's NUnit, built for .NET 3.5, declares its own Lazy<T>).
+        private static string _mocapBank;
+        private static string MocapBank => _mocapBank ?? (_mocapBank = Sessions.Simulate("mocapbank_30fps.bvh"));
 
         private static EvaluationReport Evaluate(string session, DisturbanceOptions disturbance)
         {
@@ -24,8 +26,8 @@ namespace AvatarGo.Core.Tests
         [TestCase(3)]
         public void FivePercentBurstyLossesOnEveryDeviceComeBackWithoutAJump(int seed)
         {
-            EvaluationReport clean = Evaluate(MocapBank.Value, null);
-            EvaluationReport lossy = Evaluate(MocapBank.Value, new DisturbanceOptions { DropoutRate = 0.05f, DropoutMaxSeconds = 1f, Seed = seed });
+            EvaluationReport clean = Evaluate(MocapBank, null);
+            EvaluationReport lossy = Evaluate(MocapBank, new DisturbanceOptions { DropoutRate = 0.05f, DropoutMaxSeconds = 1f, Seed = seed });
             DisturbanceReport d = lossy.Disturbance;
             int deviceFrames = 6 * lossy.Frames;
             Assert.That(d.DisturbedDeviceFrames, Is.InRange(0.03 * deviceFrames, 0.08 * deviceFrames), "about 5 % of the device-frames lost");
@@ -40,7 +42,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void TenMetreTeleportsAreNotFollowed()
         {
-            EvaluationReport r = Evaluate(MocapBank.Value, new DisturbanceOptions { TeleportMetres = 10f, TeleportsPerMinute = 6f, TeleportSeconds = 0.1f });
+            EvaluationReport r = Evaluate(MocapBank, new DisturbanceOptions { TeleportMetres = 10f, TeleportsPerMinute = 6f, TeleportSeconds = 0.1f });
             Assert.That(r.Disturbance.WhileDisturbedMm.Count, Is.GreaterThan(0));
             Assert.That(r.EndEffectorMm.Max, Is.LessThan(100.0), "mm: the glitching device's part is held, not sent 10 m away");
             Assert.That(r.Disturbance.LargestJumpMm, Is.LessThan(60.0), "mm per frame");
@@ -53,7 +55,7 @@ namespace AvatarGo.Core.Tests
             int device = Array.IndexOf(SessionSimulator.DeviceRoles, role);
             double calibratedAt = double.NaN;
             bool checkedOnce = false;
-            string session = MocapBank.Value;
+            string session = MocapBank;
             using SessionReader reader = Sessions.Read(session);
             var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
             SessionFrame frame = reader.CreateFrame();
@@ -113,7 +115,7 @@ namespace AvatarGo.Core.Tests
             {
                 double calibratedAt = double.NaN;
                 Vector3 atLoss = default;
-                using SessionReader reader = Sessions.Read(MocapBank.Value);
+                using SessionReader reader = Sessions.Read(MocapBank);
                 var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
                 SessionFrame frame = reader.CreateFrame();
                 while (reader.ReadFrame(frame))
@@ -149,7 +151,7 @@ namespace AvatarGo.Core.Tests
             RigidPose[] frozen = null;
             Vector3 lastHead = default;
             float largestStep = 0f;
-            using SessionReader reader = Sessions.Read(MocapBank.Value);
+            using SessionReader reader = Sessions.Read(MocapBank);
             var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
             SessionFrame frame = reader.CreateFrame();
             while (reader.ReadFrame(frame))
@@ -183,7 +185,7 @@ namespace AvatarGo.Core.Tests
             var shift = new Vector3(3f, 0f, 0f);
             float errorAfter = float.NaN, largestStep = 0f;
             Vector3 lastHips = default;
-            using SessionReader reader = Sessions.Read(MocapBank.Value);
+            using SessionReader reader = Sessions.Read(MocapBank);
             var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
             SessionFrame frame = reader.CreateFrame();
             while (reader.ReadFrame(frame))
