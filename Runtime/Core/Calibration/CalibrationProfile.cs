@@ -136,6 +136,33 @@ namespace AvatarGo.Core
             return p;
         }
 
+        /// <summary>
+        /// A copy in which the devices of <paramref name="a"/> and <paramref name="b"/> trade roles (controllers found in
+        /// the other hands, trackers on the other feet): each role keeps its offsets and walk-in poses, the devices' ids and
+        /// serials swap.
+        /// </summary>
+        public CalibrationProfile WithSwappedDevices(DeviceRole a, DeviceRole b)
+        {
+            var p = new CalibrationProfile(this);
+            p._deviceIds[a] = _deviceIds[b];
+            p._deviceIds[b] = _deviceIds[a];
+            p._serials[a] = _serials[b];
+            p._serials[b] = _serials[a];
+            return p;
+        }
+
+        /// <summary>
+        /// A copy in which <paramref name="role"/>'s device was measured again: at <paramref name="device"/> while its joint
+        /// was at <paramref name="joint"/> (a re-strapped tracker, <see cref="SelfAvatarPipeline.RecalibrateDevice"/>).
+        /// </summary>
+        public CalibrationProfile WithRemeasuredDevice(DeviceRole role, RigidPose device, RigidPose joint)
+        {
+            if (!device.IsValid || !joint.IsValid) throw new ArgumentException("The poses must be valid.");
+            var p = new CalibrationProfile(this);
+            p.SetOffsets(role, device, joint);
+            return p.Mode == OffsetMode.Fixed ? p.WithFixedOffsets() : p;
+        }
+
         /// <summary>Fixed-offset HMD → head joint translation in the HMD frame: 7 cm down and 9 cm back from the eyes (the inverse of <see cref="TPoser.HeadToEyes"/>).</summary>
         public static readonly Vector3 FixedHeadOffset = new Vector3(0f, -0.07f, -0.09f);
 

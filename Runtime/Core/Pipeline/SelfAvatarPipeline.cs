@@ -36,7 +36,14 @@ namespace AvatarGo.Core
         private BodyTargetMapper _mapper;
         private SampleSanitizer _sanitizer;
         private TrackingContinuity _continuity;
+        private RoleSwapDetector _swaps;
+        private SampleWindow _window;                     // the last half second after calibration, for RecalibrateDevice
         private DeviceSample[] _accepted, _effective;
+        private CalibrationProfile _measured;             // the calibration, with later swaps and re-measured devices
+        private readonly PerRole<int> _roles = new PerRole<int>(-1);
+        private float _armLength;
+        private SwapEvidence _evidence;
+        private double _lastTime = double.NaN;
         private FullBodyIk _ik;
         private SkeletonPose _pose, _lastGood;
         private BodyTargets _targets;
@@ -73,14 +80,27 @@ namespace AvatarGo.Core
         /// <summary>The last calibration step that did something (its message is what the wearer should be told).</summary>
         public CalibrationStep LastCalibrationStep => _calibrator.LastStep;
 
-        /// <summary>The measured calibration (exact offsets, what to save), once calibrated or restored; during the walk-in its scale and placement.</summary>
-        public CalibrationProfile Profile => _calibrator.Profile;
+        /// <summary>
+        /// The measured calibration (exact offsets, what to save), once calibrated or restored, with any later swaps of
+        /// devices and re-measured devices; during the walk-in its scale and placement.
+        /// </summary>
+        public CalibrationProfile Profile => _measured ?? _calibrator.Profile;
 
         /// <summary>The calibration the body is driven with: <see cref="Profile"/>, or its fixed-offset baseline (<see cref="PipelineSettings.Offsets"/>).</summary>
         public CalibrationProfile ActiveProfile { get; private set; }
 
         /// <summary>The index (in <see cref="Devices"/>) of the device playing <paramref name="role"/>, or -1 before identification.</summary>
-        public int DeviceIndexOf(DeviceRole role) => _calibrator.DeviceIndexOf(role);
+        public int DeviceIndexOf(DeviceRole role) => _mapper != null ? _roles[role] : _calibrator.DeviceIndexOf(role);
+
+        /// <summary>
+        /// The last pair of devices found swapped after calibration (controllers between the hands, trackers between the
+        /// feet), or <see cref="RoleSwap.None"/>; <see cref="LastSwapTime"/> says when. With
+        /// <see cref="TrackingSettings.ReassignSwappedDevices"/> the devices were given each other's roles then.
+        /// </summary>
+        public RoleSwap LastSwap { get; private set; }
+
+        /// <summary>When <see cref="LastSwap"/> was found (the frame's time), or NaN.</summary>
+        public double LastSwapTime { get; private set; } = double.NaN;
 
         /// <summary>
         /// The avatar's pose, world and local, of <see cref="ScaledAvatar"/>'s skeleton: null before the T-pose step; the
@@ -146,7 +166,9 @@ namespace AvatarGo.Core
             _mapper = null;
             _ik = null;
             _pose = _lastGood = null;
-            ActiveProfile = null;
+            ActiveProfile = _measured = null;
+            LastSwap = RoleSwap.None;
+            LastSwapTime = double.NaN;
             _targets = default;
             _report = default;
             for (int s = 0; s < 2; s++)
@@ -156,6 +178,51 @@ namespace AvatarGo.Core
                 _handStates[s].Solver = null;
                 _handStates[s].Fingers.Clear();
             }
+        }
+
+        /// <summary>
+        /// Gives the devices of <paramref name="a"/> and <paramref name="b"/> each other's roles (controllers in the other
+        /// hands, trackers on the other feet), as <see cref="RoleSwapDetector"/> does by itself; the avatar blends to the new
+        /// assignment. Allocates (the per-calibration objects are rebuilt). False before calibration.
+        /// </summary>
+        public bool SwapDevices(DeviceRole a, DeviceRole b)
+        {
+            if (_mapper == null || a == b) return false;
+            _measured = _measured.WithSwappedDevices(a, b);
+            Bind(true);
+            return true;
+        }
+
+        /// <summary>
+        /// Measures one device's offset again (a tracker re-strapped, perhaps after a swap of the feet), without redoing the
+        /// calibration: the wearer stands still in the calibration's T-pose for half a second, then this is called. The joint
+        /// is put where the calibration pose has it relative to the pelvis (the head, for the pelvis), placed by the pelvis's
+        /// (head's) device now. Fails (false, with <paramref name="reason"/>) when the device or its reference was not tracked
+        /// and still through the last half second, or when the hand's wrist is placed from the palm rather than measured.
+        /// Allocates.
+        /// </summary>
+        public bool RecalibrateDevice(DeviceRole role, out string reason)
+        {
+            reason = null;
+            if (_mapper == null) { reason = "not calibrated yet"; return false; }
+            if ((role == DeviceRole.LeftHand || role == DeviceRole.RightHand) && _handStates[role == DeviceRole.LeftHand ? 0 : 1].Placement == HandPlacement.PalmOnController)
+            {
+                reason = "this hand's wrist is placed from the palm on the controller, not from a measured offset";
+                return false;
+            }
+            DeviceRole referenceRole = role == DeviceRole.Pelvis ? DeviceRole.Head : DeviceRole.Pelvis;
+            WindowAverage device = _window.Average(_roles[role], _lastTime), reference = _window.Average(_roles[referenceRole], _lastTime);
+            if (!device.IsTracked || !reference.IsTracked) { reason = "the device or the " + referenceRole + " device was not tracked through the last half second"; return false; }
+            if (!device.IsStill || !reference.IsStill) { reason = "the wearer was not still through the last half second"; return false; }
+            // Where the calibration pose puts the joint relative to its reference joint, placed by the reference now.
+            SkeletonPose calibrationPose = _calibrator.AvatarPose;
+            HumanoidMap scaled = _calibrator.ScaledAvatar;
+            RigidPose reference0 = calibrationPose.World[scaled[BodyRoles.JointOf(referenceRole)]];
+            RigidPose joint0 = calibrationPose.World[scaled[BodyRoles.JointOf(role)]];
+            RigidPose referenceNow = reference.Mean * ActiveProfile.JointInDevice(referenceRole);
+            _measured = _measured.WithRemeasuredDevice(role, device.Mean, referenceNow * joint0.RelativeTo(reference0));
+            Bind(true);
+            return true;
         }
 
         /// <summary>
@@ -171,7 +238,7 @@ namespace AvatarGo.Core
 
         private void Setup()
         {
-            CalibrationProfile measured = _calibrator.Profile;
+            _measured = _calibrator.Profile;
             HumanoidMap scaled = _calibrator.ScaledAvatar;
             SkeletonPose calibrationPose = _calibrator.AvatarPose;
             _pose = new SkeletonPose(scaled.Skeleton);
@@ -180,7 +247,18 @@ namespace AvatarGo.Core
             _lastGood.CopyFrom(calibrationPose);
             _targets = default;
             _report = default;
-            ActiveProfile = Settings.Offsets == OffsetMode.Fixed ? measured.WithFixedOffsets() : measured;
+            _ik = new FullBodyIk(scaled, calibrationPose);
+            _window = new SampleWindow(_devices.Length, Settings.Calibration);
+            _accepted = new DeviceSample[_devices.Length];
+            _effective = new DeviceSample[_devices.Length];
+            RigidPose[] w = calibrationPose.World;
+            _armLength = Length(w, scaled, HumanoidBone.RightUpperArm, HumanoidBone.RightLowerArm, HumanoidBone.RightHand);
+            Vector3 right = Vector3.Transform(Vector3.UnitX, _measured.Placement.Rotation);
+            float ankles = Math.Min(w[scaled[HumanoidBone.LeftFoot]].Position.Y, w[scaled[HumanoidBone.RightFoot]].Position.Y);
+            _swaps = new RoleSwapDetector(Vector3.Transform(right, Quaternion.Conjugate(w[scaled[HumanoidBone.Hips]].Rotation)),
+                w[scaled[HumanoidBone.Head]].Position.Y - ankles, Settings.Tracking);
+            LastSwap = RoleSwap.None;
+            LastSwapTime = double.NaN;
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {
                 SetUpFingers(side);
@@ -188,25 +266,38 @@ namespace AvatarGo.Core
                 HandState state = _handStates[(int)side];
                 state.Placement = state.HasFingerIk && Settings.Hand(side).Placement == HandPlacement.PalmOnController
                     ? HandPlacement.PalmOnController : HandPlacement.CalibratedOffset;
-                if (state.Placement == HandPlacement.PalmOnController)
-                    ActiveProfile = ActiveProfile.WithJointInDevice(BodyRoles.Hand(side), _hands[(int)side].WristInController(Settings.Hand(side).Controller));
             }
-            _mapper = new BodyTargetMapper(ActiveProfile, _devices, scaled, calibrationPose);
-            _ik = new FullBodyIk(scaled, calibrationPose);
-            var roles = new PerRole<int>(-1);
-            foreach (DeviceRole role in BodyRoles.All) roles[role] = _calibrator.DeviceIndexOf(role);
+            Bind(false);
+        }
+
+        // Everything that depends on which device plays which role and on the offsets: rebuilt after a calibration, a
+        // swap or a re-measured device. After the last two the avatar blends from its current pose.
+        private void Bind(bool blendFromCurrentPose)
+        {
+            HumanoidMap scaled = _calibrator.ScaledAvatar;
+            SkeletonPose calibrationPose = _calibrator.AvatarPose;
+            CalibrationProfile active = Settings.Offsets == OffsetMode.Fixed ? _measured.WithFixedOffsets() : _measured;
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+                if (_handStates[(int)side].Placement == HandPlacement.PalmOnController)
+                    active = active.WithJointInDevice(BodyRoles.Hand(side), _hands[(int)side].WristInController(Settings.Hand(side).Controller));
+            ActiveProfile = active;
+            foreach (DeviceRole role in BodyRoles.All)
+                for (int d = 0; d < _devices.Length; d++)
+                    if (_devices[d].Id == active.DeviceId(role)) _roles[role] = d;
+            _mapper = new BodyTargetMapper(active, _devices, scaled, calibrationPose);
             var reach = new float[_devices.Length];
             for (int d = 0; d < reach.Length; d++) reach[d] = -1f; // devices no role uses are not checked
-            Vector3 head0 = ActiveProfile.DeviceAtCalibration(DeviceRole.Head).Position;
-            foreach (DeviceRole role in BodyRoles.All) reach[roles[role]] = Vector3.Distance(ActiveProfile.DeviceAtCalibration(role).Position, head0);
-            _sanitizer = new SampleSanitizer(_devices.Length, roles[DeviceRole.Head], reach, Settings.Tracking);
-            _continuity = new TrackingContinuity(ActiveProfile, roles, scaled, calibrationPose, Settings.Tracking);
-            _accepted = new DeviceSample[_devices.Length];
-            _effective = new DeviceSample[_devices.Length];
+            Vector3 head0 = active.DeviceAtCalibration(DeviceRole.Head).Position;
+            foreach (DeviceRole role in BodyRoles.All) reach[_roles[role]] = Vector3.Distance(active.DeviceAtCalibration(role).Position, head0);
+            _sanitizer = new SampleSanitizer(_devices.Length, _roles[DeviceRole.Head], reach, Settings.Tracking);
+            _continuity = new TrackingContinuity(active, _roles, scaled, calibrationPose, Settings.Tracking);
+            if (blendFromCurrentPose) _continuity.StartFrom(_pose, scaled);
+            _swaps.Clear();
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {
                 int s = (int)side;
-                _controllerInWrist[s] = ActiveProfile.JointInDevice(BodyRoles.Hand(side)).Inverse();
+                _controllerInWrist[s] = active.JointInDevice(BodyRoles.Hand(side)).Inverse();
+                if (blendFromCurrentPose) continue;
                 _handStates[s].ControllerPose = _pose.World[scaled[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]] * _controllerInWrist[s];
                 _handStates[s].DrawnInHand = false;
             }
@@ -237,6 +328,9 @@ namespace AvatarGo.Core
 
         private void Solve(double time, ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip)
         {
+            float dt = !double.IsNaN(_lastTime) && time > _lastTime ? (float)Math.Min(time - _lastTime, 0.25) : 0f;
+            _lastTime = time;
+            _window.Add(time, samples);
             // Bad samples out, lost devices' parts held and eased, returning ones blended back; without the HMD, freeze.
             _sanitizer.Filter(time, samples, _accepted);
             if (!_continuity.Apply(time, _accepted, _pose, _effective))
@@ -251,6 +345,35 @@ namespace AvatarGo.Core
             _pose.UpdateWorld();
             if (IsFinite(_pose)) _lastGood.CopyFrom(_pose);
             else _pose.CopyFrom(_lastGood); // never a NaN on a bone: keep the last good frame
+            CheckForSwaps(time, dt);
+        }
+
+        // Controllers in the other hands, or trackers on the other feet: found from where the devices are.
+        private void CheckForSwaps(double time, float dt)
+        {
+            HumanoidMap avatar = _calibrator.ScaledAvatar;
+            CalibrationProfile p = ActiveProfile;
+            DeviceSample lh = _accepted[_roles[DeviceRole.LeftHand]], rh = _accepted[_roles[DeviceRole.RightHand]];
+            DeviceSample lf = _accepted[_roles[DeviceRole.LeftFoot]], rf = _accepted[_roles[DeviceRole.RightFoot]];
+            ref SwapEvidence e = ref _evidence;
+            e.LeftHand = (lh.Pose * p.JointInDevice(DeviceRole.LeftHand)).Position;
+            e.RightHand = (rh.Pose * p.JointInDevice(DeviceRole.RightHand)).Position;
+            e.LeftHandIfSwapped = (rh.Pose * p.JointInDevice(DeviceRole.LeftHand)).Position;
+            e.RightHandIfSwapped = (lh.Pose * p.JointInDevice(DeviceRole.RightHand)).Position;
+            e.LeftShoulder = _pose.World[avatar[HumanoidBone.LeftUpperArm]].Position;
+            e.RightShoulder = _pose.World[avatar[HumanoidBone.RightUpperArm]].Position;
+            e.ArmLength = _armLength;
+            e.HandsTracked = lh.IsTracked && rh.IsTracked;
+            e.LeftFoot = (lf.Pose * p.JointInDevice(DeviceRole.LeftFoot)).Position;
+            e.RightFoot = (rf.Pose * p.JointInDevice(DeviceRole.RightFoot)).Position;
+            e.FeetTracked = lf.IsTracked && rf.IsTracked;
+            RoleSwap swap = _swaps.Update(dt, _targets.Hips, _targets.Head.Position, in _evidence);
+            if (swap == RoleSwap.None) return;
+            LastSwap = swap;
+            LastSwapTime = time;
+            if (!Settings.Tracking.ReassignSwappedDevices) return;
+            if (swap == RoleSwap.Hands) SwapDevices(DeviceRole.LeftHand, DeviceRole.RightHand);
+            else SwapDevices(DeviceRole.LeftFoot, DeviceRole.RightFoot);
         }
 
         // Where the controller is drawn (tracked, or in the hand where the arm cannot reach), then the fingers on it.
@@ -262,7 +385,7 @@ namespace AvatarGo.Core
             HumanoidMap avatar = _calibrator.ScaledAvatar;
             RigidPose wrist = _pose.World[avatar[side == BodySide.Left ? HumanoidBone.LeftHand : HumanoidBone.RightHand]];
             RigidPose inHand = wrist * _controllerInWrist[s];
-            int device = _calibrator.DeviceIndexOf(BodyRoles.Hand(side));
+            int device = _roles[BodyRoles.Hand(side)];
             state.ControllerTracked = _continuity.IsTracked(BodyRoles.Hand(side));
             state.Reached = target.IsActive && reach.Reached;
             state.DistanceLeft = target.IsActive ? reach.DistanceLeft : 0f;
@@ -295,6 +418,9 @@ namespace AvatarGo.Core
                 state.ControllerPose = _pose.World[avatar[HumanoidBones.OnSide(HumanoidBone.LeftHand, state.Side)]] * _controllerInWrist[s];
             }
         }
+
+        private static float Length(RigidPose[] w, HumanoidMap avatar, HumanoidBone root, HumanoidBone middle, HumanoidBone end) =>
+            Vector3.Distance(w[avatar[root]].Position, w[avatar[middle]].Position) + Vector3.Distance(w[avatar[middle]].Position, w[avatar[end]].Position);
 
         private static bool IsFinite(SkeletonPose pose)
         {

@@ -33,7 +33,7 @@ namespace AvatarGo.Core
 
         private sealed class RoleState
         {
-            public bool Lost, Recovering;
+            public bool Lost, Recovering, BlendNext;
             public double LostSince;
             public RigidPose HeldLocal;      // the joint relative to its reference when it was lost
             public RigidPose Shown;          // the joint pose fed last frame
@@ -81,13 +81,30 @@ namespace AvatarGo.Core
         /// <summary>True while <paramref name="role"/>'s joint is being blended back onto its device after a loss.</summary>
         public bool IsRecovering(DeviceRole role) => _state[role].Recovering;
 
+        /// <summary>
+        /// Continues from the avatar's current pose: every part is blended, as after a loss, from where
+        /// <paramref name="pose"/> shows it to where its device puts it (after the devices' roles or offsets changed).
+        /// </summary>
+        public void StartFrom(SkeletonPose pose, HumanoidMap avatar)
+        {
+            if (pose == null) throw new ArgumentNullException(nameof(pose));
+            if (avatar == null) throw new ArgumentNullException(nameof(avatar));
+            foreach (DeviceRole role in BodyRoles.All)
+            {
+                RoleState s = _state[role];
+                s.Shown = pose.World[avatar[BodyRoles.JointOf(role)]];
+                s.Lost = s.Recovering = false;
+                s.BlendNext = true;
+            }
+        }
+
         /// <summary>Forgets every loss (after a calibration): every joint as at the calibration.</summary>
         public void Clear()
         {
             foreach (DeviceRole role in BodyRoles.All)
             {
                 RoleState s = _state[role];
-                s.Lost = s.Recovering = false;
+                s.Lost = s.Recovering = s.BlendNext = false;
                 s.Shown = _joint0[role];
             }
             _lastTime = double.NaN;
@@ -132,9 +149,9 @@ namespace AvatarGo.Core
             if (accepted[device].IsTracked)
             {
                 joint = accepted[device].Pose * _jointInDevice[role];
-                if (s.Lost)
+                if (s.Lost || s.BlendNext)
                 {
-                    s.Lost = false;
+                    s.Lost = s.BlendNext = false;
                     s.Recovering = true;
                     s.OffsetPosition = s.Shown.Position - joint.Position;
                     s.OffsetRotation = Quaternion.Normalize(s.Shown.Rotation * Quaternion.Conjugate(joint.Rotation));
@@ -166,7 +183,7 @@ namespace AvatarGo.Core
             RoleState s = _state[role];
             if (s.Lost) return;
             s.Lost = true;
-            s.Recovering = false;
+            s.Recovering = s.BlendNext = false;
             s.LostSince = time;
             s.HeldLocal = s.Shown.RelativeTo(reference);
             if (role == DeviceRole.Pelvis)

@@ -42,5 +42,18 @@ namespace AvatarGo.Core
 
         /// <summary>…nor turns faster than this (°/s, 360).</summary>
         public float RecoveryMaxAngularSpeedDegrees { get; set; } = 360f;
+
+        /// <summary>
+        /// When true (the default), controllers found in the other hands, or foot trackers on the other feet, after
+        /// calibration (<see cref="RoleSwapDetector"/>) are given each other's roles at once; when false, the swap is only
+        /// reported (<see cref="SelfAvatarPipeline.LastSwap"/>).
+        /// </summary>
+        public bool ReassignSwappedDevices { get; set; } = true;
+
+        /// <summary>How long a pair must look swapped before it is (3 s): crossing the arms or legs for a moment is not a swap.</summary>
+        public float SwapWindowSeconds { get; set; } = 3f;
+
+        /// <summary>How far (m) the left device must be to the right of the right one to count as swapped in a frame (0.2).</summary>
+        public float SwapMargin { get; set; } = 0.2f;
     }
 }

@@ -39,6 +39,9 @@ namespace AvatarGo.Simulation
         /// <summary>Frames in which a hand could not reach its controller.</summary>
         public int UnreachedHandFrames { get; internal set; }
 
+        /// <summary>How many times the pipeline found devices swapped (none should be, in a session without swaps).</summary>
+        public int RoleSwaps { get; internal set; }
+
         /// <summary>What the injected disturbances did, when the evaluation injected any; else null.</summary>
         public DisturbanceReport Disturbance { get; internal set; }
 

@@ -69,6 +69,7 @@ namespace AvatarGo.Simulation
                     continue;
                 }
                 SkeletonPose pose = pipeline.Pose;
+                if (pipeline.LastSwapTime == frame.Time) report.RoleSwaps++;
                 if (!pipeline.Hand(BodySide.Left).Reached || !pipeline.Hand(BodySide.Right).Reached) report.UnreachedHandFrames++;
                 onFrame?.Invoke(pipeline);
                 report.Frames++;

@@ -40,6 +40,7 @@ namespace AvatarGo.Core.Tests
             Assert.That(exact.Profile, Is.Not.Null, exact.CalibrationMessage);
             Assert.That(exact.Frames, Is.GreaterThan(100));
             Assert.That(exact.AllJointsMm.InvalidCount, Is.EqualTo(0), "no NaN joint");
+            Assert.That(exact.RoleSwaps, Is.EqualTo(0), "no device taken for swapped in real motion");
             Assert.That(exact.EndEffectorMm.Median, Is.LessThanOrEqualTo(5.0), "end-effector median (mm)");
             Assert.That(exact.EndEffectorMm.P95, Is.LessThanOrEqualTo(15.0), "end-effector p95 (mm)");
             Assert.That(exact.AllJointsMm.Mean, Is.LessThanOrEqualTo(mpjpeLimit), "MPJPE (mm)");

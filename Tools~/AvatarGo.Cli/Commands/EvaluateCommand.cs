@@ -178,6 +178,7 @@ public sealed class EvaluateCommand : ICommand
             mpjpe_mm = r.AllJointsMm.Mean,
             knee_angle_error_deg = r.KneeAngleDegrees.Median,
             unreached_hand_frames = r.UnreachedHandFrames,
+            role_swaps = r.RoleSwaps,
             joints = r.JointPositionMm.OrderBy(p => p.Key).ToDictionary(p => p.Key.ToString(), p => new { median_mm = p.Value.Median, p95_mm = p.Value.P95, max_mm = p.Value.Max }),
             disturbance = r.Disturbance == null ? null : new
             {

@@ -1,0 +1,136 @@
+using System;
+using System.Numerics;
+using NUnit.Framework;
+using AvatarGo.Simulation;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// Devices that change places after calibration: controllers swapped between the hands and trackers moved to the other
+    /// feet are found from the geometry and given each other's roles; a re-strapped tracker is measured again alone.
+    /// </summary>
+    public class DeviceSwapTests
+    {
+        private static int Index(DeviceRole role) => Array.IndexOf(Wearer.TrueRoles, role);
+
+        private static SelfAvatarPipeline Calibrated(Wearer wearer, ref double t)
+        {
+            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map);
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            Assume.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), pipeline.LastCalibrationStep.Message);
+            return pipeline;
+        }
+
+        // The wearer stands in T-pose (arms out: where swapped hands are out of reach) for `seconds`, with `edit` applied to
+        // the samples; returns the largest wrist and ankle errors over the last second (m).
+        private static (float wrist, float ankle) Stand(Wearer wearer, SelfAvatarPipeline pipeline, ref double t, double seconds, Action<DeviceSample[]> edit)
+        {
+            var samples = new DeviceSample[6];
+            float wrist = 0f, ankle = 0f;
+            int frames = (int)(seconds * 90);
+            for (int i = 0; i < frames; i++)
+            {
+                wearer.Sample(samples, 0.001f, 0.1f);
+                edit?.Invoke(samples);
+                pipeline.Update(t += 1 / 90.0, samples, default, default, null);
+                if (i < frames - 90) continue;
+                foreach (HumanoidBone b in new[] { HumanoidBone.LeftHand, HumanoidBone.RightHand })
+                    wrist = Math.Max(wrist, Vector3.Distance(pipeline.Pose.World[pipeline.ScaledAvatar[b]].Position, wearer.Pose.World[wearer.Map[b]].Position));
+                foreach (HumanoidBone b in new[] { HumanoidBone.LeftFoot, HumanoidBone.RightFoot })
+                    ankle = Math.Max(ankle, Vector3.Distance(pipeline.Pose.World[pipeline.ScaledAvatar[b]].Position, wearer.Pose.World[wearer.Map[b]].Position));
+            }
+            return (wrist, ankle);
+        }
+
+        private static void Swap(DeviceSample[] s, DeviceRole a, DeviceRole b)
+        {
+            DeviceSample x = s[Index(a)];
+            s[Index(a)] = s[Index(b)];
+            s[Index(b)] = x;
+        }
+
+        [Test]
+        public void ControllersSwappedBetweenTheHandsAreFoundAndReassigned()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 61);
+            double t = 0;
+            SelfAvatarPipeline pipeline = Calibrated(wearer, ref t);
+            int leftBefore = pipeline.DeviceIndexOf(DeviceRole.LeftHand);
+            double start = t;
+            (float wrist, _) = Stand(wearer, pipeline, ref t, 6.0, s => Swap(s, DeviceRole.LeftHand, DeviceRole.RightHand));
+            Assert.That(pipeline.LastSwap, Is.EqualTo(RoleSwap.Hands));
+            Assert.That(pipeline.LastSwapTime - start, Is.LessThan(3.0), "found within the 3 s window");
+            Assert.That(pipeline.DeviceIndexOf(DeviceRole.RightHand), Is.EqualTo(leftBefore), "the devices traded roles");
+            Assert.That(pipeline.Profile.DeviceId(DeviceRole.RightHand), Is.EqualTo(wearer.Devices[leftBefore].Id), "and the profile to save says so");
+            Assert.That(wrist, Is.LessThan(0.015f), "the wrists are back on the wearer's, as before the swap (m; the T-pose's stretched arms are at the end of their reach)");
+        }
+
+        [Test]
+        public void HandsCrossedForAMomentAreNotASwap()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 62);
+            double t = 0;
+            SelfAvatarPipeline pipeline = Calibrated(wearer, ref t);
+            int leftBefore = pipeline.DeviceIndexOf(DeviceRole.LeftHand);
+            // Two seconds of swapped hands (shorter than the window), then as they are.
+            Stand(wearer, pipeline, ref t, 2.0, s => Swap(s, DeviceRole.LeftHand, DeviceRole.RightHand));
+            Stand(wearer, pipeline, ref t, 4.0, null);
+            Assert.That(pipeline.LastSwap, Is.EqualTo(RoleSwap.None));
+            Assert.That(pipeline.DeviceIndexOf(DeviceRole.LeftHand), Is.EqualTo(leftBefore));
+        }
+
+        [Test]
+        public void TrackersMovedToTheOtherFeetAreFoundAndReassigned()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 63);
+            double t = 0;
+            SelfAvatarPipeline pipeline = Calibrated(wearer, ref t);
+            (_, float ankle) = Stand(wearer, pipeline, ref t, 6.0, s => Swap(s, DeviceRole.LeftFoot, DeviceRole.RightFoot));
+            Assert.That(pipeline.LastSwap, Is.EqualTo(RoleSwap.Feet));
+            Assert.That(ankle, Is.LessThan(0.01f), "the ankles are back on the wearer's (m)");
+        }
+
+        [Test]
+        public void ASwapCanBeOnlyReported()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 64);
+            double t = 0;
+            var settings = new PipelineSettings();
+            settings.Tracking.ReassignSwappedDevices = false;
+            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map, settings);
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            int leftBefore = pipeline.DeviceIndexOf(DeviceRole.LeftFoot);
+            Stand(wearer, pipeline, ref t, 5.0, s => Swap(s, DeviceRole.LeftFoot, DeviceRole.RightFoot));
+            Assert.That(pipeline.LastSwap, Is.EqualTo(RoleSwap.Feet));
+            Assert.That(pipeline.DeviceIndexOf(DeviceRole.LeftFoot), Is.EqualTo(leftBefore), "reported, not reassigned");
+        }
+
+        [Test]
+        public void AReStrappedTrackerIsMeasuredAgainAlone()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 65);
+            double t = 0;
+            SelfAvatarPipeline pipeline = Calibrated(wearer, ref t);
+            // The left foot's tracker slipped: 3 cm along the foot and turned 40° on its strap.
+            var slip = new RigidPose(new Vector3(0.03f, 0f, 0.01f), Rotations.AngleAxis(40f, new Vector3(0.2f, 1f, 0.1f)));
+            (_, float before) = Stand(wearer, pipeline, ref t, 1.0, s => s[Index(DeviceRole.LeftFoot)] = new DeviceSample(s[Index(DeviceRole.LeftFoot)].Pose * slip, true));
+            Assert.That(before, Is.GreaterThan(0.02f), "the slip moves the ankle (m)");
+            Assert.That(pipeline.RecalibrateDevice(DeviceRole.LeftFoot, out string reason), Is.True, reason);
+            (_, float after) = Stand(wearer, pipeline, ref t, 1.5, s => s[Index(DeviceRole.LeftFoot)] = new DeviceSample(s[Index(DeviceRole.LeftFoot)].Pose * slip, true));
+            Assert.That(after, Is.LessThan(0.006f), "measured again, the ankle follows the wearer's (m; placed by the pelvis, whose own offset is within 3 mm)");
+            Assert.That(pipeline.RecalibrateDevice(DeviceRole.LeftFoot, out _), Is.True, "again, standing still");
+        }
+
+        [Test]
+        public void RecalibratingRefusesAMovingWearer()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 66);
+            double t = 0;
+            SelfAvatarPipeline pipeline = Calibrated(wearer, ref t);
+            int k = 0;
+            Stand(wearer, pipeline, ref t, 1.0, s => s[Index(DeviceRole.LeftFoot)] = new DeviceSample(new RigidPose(s[Index(DeviceRole.LeftFoot)].Pose.Position + new Vector3(0, 0, 0.002f * k++), s[Index(DeviceRole.LeftFoot)].Pose.Rotation), true));
+            Assert.That(pipeline.RecalibrateDevice(DeviceRole.LeftFoot, out string reason), Is.False);
+            Assert.That(reason, Does.Contain("still"));
+        }
+    }
+}
