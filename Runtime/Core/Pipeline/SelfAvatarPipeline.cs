@@ -37,6 +37,7 @@ namespace AvatarGo.Core
         private SampleSanitizer _sanitizer;
         private TrackingContinuity _continuity;
         private RoleSwapDetector _swaps;
+        private OneEuroFilter _smoothing;                 // null when TrackingSettings.Smoothing is off
         private SampleWindow _window;                     // the last half second after calibration, for RecalibrateDevice
         private DeviceSample[] _accepted, _effective;
         private CalibrationProfile _measured;             // the calibration, with later swaps and re-measured devices
@@ -249,6 +250,8 @@ namespace AvatarGo.Core
             _report = default;
             _ik = new FullBodyIk(scaled, calibrationPose);
             _window = new SampleWindow(_devices.Length, Settings.Calibration);
+            TrackingSettings tracking = Settings.Tracking;
+            _smoothing = tracking.Smoothing ? new OneEuroFilter(_devices.Length, tracking.SmoothingMinCutoff, tracking.SmoothingBeta) : null;
             _accepted = new DeviceSample[_devices.Length];
             _effective = new DeviceSample[_devices.Length];
             RigidPose[] w = calibrationPose.World;
@@ -333,6 +336,7 @@ namespace AvatarGo.Core
             _window.Add(time, samples);
             // Bad samples out, lost devices' parts held and eased, returning ones blended back; without the HMD, freeze.
             _sanitizer.Filter(time, samples, _accepted);
+            _smoothing?.Apply(time, _accepted);
             if (!_continuity.Apply(time, _accepted, _pose, _effective))
             {
                 Freeze();

@@ -44,6 +44,18 @@ namespace AvatarGo.Core
         public float RecoveryMaxAngularSpeedDegrees { get; set; } = 360f;
 
         /// <summary>
+        /// Smooths every accepted device pose with a <see cref="OneEuroFilter"/> before the body is solved. Off by default:
+        /// at the noise of current trackers it costs more (latency) than it gives (Documentation~/solver.md, "Jitter").
+        /// </summary>
+        public bool Smoothing { get; set; }
+
+        /// <summary>The smoothing's cutoff for a still device, in Hz (<see cref="OneEuroFilter"/>).</summary>
+        public float SmoothingMinCutoff { get; set; } = 2f;
+
+        /// <summary>How fast the smoothing's cutoff rises with speed (Hz per m/s, and per rad/s).</summary>
+        public float SmoothingBeta { get; set; } = 30f;
+
+        /// <summary>
         /// When true (the default), controllers found in the other hands, or foot trackers on the other feet, after
         /// calibration (<see cref="RoleSwapDetector"/>) are given each other's roles at once; when false, the swap is only
         /// reported (<see cref="SelfAvatarPipeline.LastSwap"/>).

@@ -14,8 +14,9 @@ namespace AvatarGo.Tools.Tests.Pipeline;
 /// </summary>
 public class PipelineAllocationTests
 {
-    [Test]
-    public void AFrameAfterCalibrationAllocatesNothing()
+    [TestCase(false)]
+    [TestCase(true)]
+    public void AFrameAfterCalibrationAllocatesNothing(bool smoothing)
     {
         ControllerProfile controller = ControllerProfile.Parse(File.ReadAllText(Path.Combine(Paths.PackageRoot, "Runtime", "ControllerProfiles", "valve-index.json")));
         BvhClip clip = BvhReader.ReadFile(Paths.Mocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true });
@@ -26,6 +27,7 @@ public class PipelineAllocationTests
         var settings = new PipelineSettings();
         settings.LeftHand.Controller = settings.RightHand.Controller = controller;
         settings.RightHand.Grip = GripMode.InputDriven;
+        settings.Tracking.Smoothing = smoothing;
         using var reader = new SessionReader(new StringReader(text.ToString()), "allocation");
         var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid, settings);
         SessionFrame frame = reader.CreateFrame();
