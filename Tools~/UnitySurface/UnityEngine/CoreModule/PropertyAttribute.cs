@@ -1,0 +1,10 @@
+// Compile-only Unity API surface (see Tools~/UnitySurface/README.md): only what the package uses, as Unity declares it.
+
+namespace UnityEngine
+{
+    // UnityCsReference@2021.3 Runtime/Export/PropertyDrawer/PropertyAttribute.cs (Field only in 2021.3; Field | Property from 6000.0: trap T10)
+    [System.AttributeUsage(System.AttributeTargets.Field, Inherited = true, AllowMultiple = false)]
+    public abstract class PropertyAttribute : System.Attribute
+    {
+    }
+}
