@@ -2,7 +2,8 @@
 
 namespace UnityEngine
 {
-    // UnityCsReference@2021.3 Runtime/Export/Scripting/Attributes.cs (no AttributeUsage: any target)
+    // no AttributeUsage: any target
+    // UnityCsReference@2021.3 Runtime/Export/Scripting/Attributes.cs
     public sealed class AddComponentMenu : System.Attribute
     {
         public AddComponentMenu(string menuName) => throw null;

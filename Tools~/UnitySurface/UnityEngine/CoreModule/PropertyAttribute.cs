@@ -2,7 +2,8 @@
 
 namespace UnityEngine
 {
-    // UnityCsReference@2021.3 Runtime/Export/PropertyDrawer/PropertyAttribute.cs (Field only in 2021.3; Field | Property from 6000.0: trap T10)
+    // Field only in 2021.3; Field | Property from 6000.0: trap T10
+    // UnityCsReference@2021.3 Runtime/Export/PropertyDrawer/PropertyAttribute.cs
     [System.AttributeUsage(System.AttributeTargets.Field, Inherited = true, AllowMultiple = false)]
     public abstract class PropertyAttribute : System.Attribute
     {

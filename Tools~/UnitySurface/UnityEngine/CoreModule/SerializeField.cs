@@ -2,7 +2,8 @@
 
 namespace UnityEngine
 {
-    // UnityCsReference@2021.3 Runtime/Export/Serialization/Serialization.cs (no AttributeUsage: any target)
+    // no AttributeUsage: any target
+    // UnityCsReference@2021.3 Runtime/Export/Serialization/Serialization.cs
     public sealed class SerializeField : System.Attribute
     {
     }

@@ -2,7 +2,8 @@
 
 namespace UnityEngine
 {
-    // UnityCsReference@2021.3 Runtime/Export/Time/Time.bindings.cs (a non-static class with static members)
+    // a non-static class with static members
+    // UnityCsReference@2021.3 Runtime/Export/Time/Time.bindings.cs
     public class Time
     {
         public static double timeAsDouble => throw null;
