@@ -86,7 +86,15 @@ public sealed class CalibrateCommand : ICommand
         }
         if (ok && save != null)
         {
-            CalibrationProfileStore.Save(calibrator.Profile, save);
+            try
+            {
+                CalibrationProfileStore.Save(calibrator.Profile, save); // atomic: a failure leaves an older PROFILE as it was
+            }
+            catch (ArgumentException e)
+            {
+                stderr.WriteLine($"avatargo calibrate: the profile was not saved: {e.Message.Split(" (Parameter '")[0]}");
+                return 1;
+            }
             if (!json) stdout.WriteLine($"profile saved to {save}");
         }
         return ok ? 0 : 1;

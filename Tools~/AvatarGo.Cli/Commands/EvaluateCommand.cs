@@ -55,7 +55,7 @@ public sealed class EvaluateCommand : ICommand
             return 1;
         }
         Print(report, stdout);
-        if (json != null) File.WriteAllText(json, ToJson(report));
+        if (json != null) AtomicFileWriter.WriteAllText(json, ToJson(report)); // whole or not at all: a failure leaves an older OUT as it was
         return 0;
     }
 

@@ -45,7 +45,7 @@ public sealed class FingersCommand : ICommand
 
         string profilesDir = FindProfiles();
         var profiles = Directory.GetFiles(profilesDir, "*.json").OrderBy(f => f, StringComparer.Ordinal)
-            .Select(f => ControllerProfile.Parse(File.ReadAllText(f))).Where(p => only == null || p.Name == only).ToList();
+            .Select(ControllerProfile.Load).Where(p => only == null || p.Name == only).ToList();
         if (profiles.Count == 0) throw new UsageException($"no controller profile named '{only}' in {profilesDir}");
         var rigs = new List<(string Name, HumanoidMap Map)>();
         if (handFile == null || handFile == "reference") rigs.Add(("reference", ReferenceHandRig.Build()));
