@@ -14,8 +14,8 @@ namespace AvatarGo.Core
     /// </summary>
     /// <remarks>
     /// Loading checks every number where it is read, so that a profile that loads can be restored, solved and saved
-    /// again: the avatar scale within <see cref="MinAvatarScale"/>…<see cref="MaxAvatarScale"/>, eye heights positive
-    /// and at most <see cref="MaxHeight"/>, every position (floor height included) within ±<see cref="MaxPosition"/>,
+    /// again: the avatar scale within <see cref="MinAvatarScale"/>…<see cref="MaxAvatarScale"/>, eye heights from 0
+    /// (unknown) to <see cref="MaxHeight"/>, every position (floor height included) within ±<see cref="MaxPosition"/>,
     /// unit quaternions, device ids that fit an int; and the text at most <see cref="MaxFileLength"/> characters.
     /// </remarks>
     public static class CalibrationProfileStore
@@ -93,14 +93,14 @@ namespace AvatarGo.Core
             var p = new CalibrationProfile
             {
                 AvatarScale = Number(root, "avatarScale", MinAvatarScale, MaxAvatarScale),
-                WearerEyeHeight = PositiveUpTo(root, "wearerEyeHeight", MaxHeight),
-                AvatarEyeHeight = PositiveUpTo(root, "avatarEyeHeight", MaxHeight),
+                WearerEyeHeight = Number(root, "wearerEyeHeight", 0f, MaxHeight),
+                AvatarEyeHeight = Number(root, "avatarEyeHeight", 0f, MaxHeight),
                 FloorHeight = Number(root, "floorHeight", -MaxPosition, MaxPosition),
                 Placement = ReadPose(root, "placement"),
                 RootToHead = ReadPosition(root, "rootToHead"),
             };
             string mode = root.GetString("mode");
-            if (mode != "exact" && mode != "fixed") throw root["mode"].Error($"'mode' must be exact or fixed, not '{Shorten(mode)}'.");
+            if (mode != "exact" && mode != "fixed") throw root["mode"].Error($"'mode' must be exact or fixed, not '{JsonNode.Printable(mode)}'.");
             JsonNode roles = root["roles"];
             if (roles == null || roles.Kind != JsonKind.Object) throw (roles ?? root).Error("'roles' must be an object.");
             foreach (DeviceRole role in BodyRoles.All)
@@ -193,16 +193,5 @@ namespace AvatarGo.Core
                 throw node[name].Error($"'{name}' is {v.ToString("R", CultureInfo.InvariantCulture)}; it must be from {min.ToString(CultureInfo.InvariantCulture)} to {max.ToString(CultureInfo.InvariantCulture)}.");
             return (float)v;
         }
-
-        private static float PositiveUpTo(JsonNode node, string name, float max)
-        {
-            double v = node.GetNumber(name);
-            // (float)v must stay positive too: 1e-50 is a positive double but a zero float.
-            if (!((float)v > 0f && (float)v <= max))
-                throw node[name].Error($"'{name}' is {v.ToString("R", CultureInfo.InvariantCulture)}; it must be positive and at most {max.ToString(CultureInfo.InvariantCulture)}.");
-            return (float)v;
-        }
-
-        private static string Shorten(string s) => s.Length <= 40 ? s : s.Substring(0, 40) + "...";
     }
 }

@@ -88,7 +88,7 @@ namespace AvatarGo.Core
                     case "sphere": list.Add(SdfShape.Sphere(Point(s, "centre"), Length(s, "radius"))); break;
                     case "box": list.Add(SdfShape.Box(Point(s, "centre"), HalfExtents(s), Rotation(s))); break;
                     case "roundedBox": list.Add(SdfShape.RoundedBox(Point(s, "centre"), HalfExtents(s), Length(s, "radius"), Rotation(s))); break;
-                    default: throw s["type"].Error($"Unknown shape type '{(type.Length <= 40 ? type : type.Substring(0, 40) + "...")}' (capsule, sphere, box, roundedBox).");
+                    default: throw s["type"].Error($"Unknown shape type '{JsonNode.Printable(type)}' (capsule, sphere, box, roundedBox).");
                 }
             }
             return new ControllerProfile(root.GetString("name"), root.GetString("displayName"), new SdfComposite(list), Point(root, "trigger"), Point(root, "thumbRest"));

@@ -78,7 +78,10 @@ namespace AvatarGo.Core
         {
             private readonly TextLineReader _lines;
             private readonly string _source;
-            private string[] _tokens = Array.Empty<string>();
+            // The current hierarchy line's tokens, as ranges of _lines.Line (no string per token: only names are kept).
+            private int[] _tokenStarts = new int[16];
+            private int[] _tokenLengths = new int[16];
+            private int _tokenCount;
             private int _tokenIndex;
             private int _tokenLine;
 
@@ -112,15 +115,15 @@ namespace AvatarGo.Core
 
             public BvhClip Parse(float scale)
             {
-                if (!Try(out string first)) throw Error(Math.Max(1, LineNumber), "the file is empty; expected HIERARCHY");
+                if (!Try(out ReadOnlySpan<char> first)) throw Error(Math.Max(1, LineNumber), "the file is empty; expected HIERARCHY");
                 if (!Is(first, "HIERARCHY")) throw Error(_tokenLine, $"expected HIERARCHY, found '{Shorten(first)}'");
-                string root = Next("ROOT");
+                ReadOnlySpan<char> root = Next("ROOT");
                 if (!Is(root, "ROOT")) throw Error(_tokenLine, $"expected ROOT, found '{Shorten(root)}'");
                 ParseHierarchy();
-                string motion = Next("MOTION");
+                ReadOnlySpan<char> motion = Next("MOTION");
                 if (!Is(motion, "MOTION"))
                     throw Error(_tokenLine, Is(motion, "ROOT") ? "a second ROOT is not supported" : $"expected MOTION, found '{Shorten(motion)}'");
-                if (_tokenIndex < _tokens.Length) throw Error(_tokenLine, $"unexpected '{Shorten(_tokens[_tokenIndex])}' after MOTION");
+                if (_tokenIndex < _tokenCount) throw Error(_tokenLine, $"unexpected '{Shorten(Token(_tokenIndex))}' after MOTION");
                 return ParseMotion(scale);
             }
 
@@ -134,8 +137,8 @@ namespace AvatarGo.Core
                 {
                     OpenJoint joint = open[open.Count - 1];
                     string name = _names[joint.Index];
-                    string token = Next("}");
-                    if (token == "}")
+                    ReadOnlySpan<char> token = Next("}");
+                    if (token.Length == 1 && token[0] == '}')
                     {
                         if (!joint.HasOffset) throw Error(joint.Line, $"joint '{Shorten(name)}' has no OFFSET");
                         if (!joint.EndSite && !joint.HasChannels) throw Error(joint.Line, $"joint '{Shorten(name)}' has no CHANNELS");
@@ -146,7 +149,7 @@ namespace AvatarGo.Core
                         if (joint.HasOffset) throw Error(_tokenLine, $"joint '{Shorten(name)}' has two OFFSETs");
                         int l = _tokenLine;
                         _offsets[joint.Index] = new Vector3(Number(l), Number(l), Number(l));
-                        if (_tokenIndex < _tokens.Length) throw Error(l, "OFFSET takes 3 numbers; found more");
+                        if (_tokenIndex < _tokenCount) throw Error(l, "OFFSET takes 3 numbers; found more");
                         joint.HasOffset = true;
                         open[open.Count - 1] = joint;
                     }
@@ -180,7 +183,7 @@ namespace AvatarGo.Core
                 string name;
                 if (endSite)
                 {
-                    string site = Next("Site");
+                    ReadOnlySpan<char> site = Next("Site");
                     if (!Is(site, "Site")) throw Error(_tokenLine, $"expected 'Site' after 'End', found '{Shorten(site)}'");
                     name = UniqueName(_names[parent] + "_End");
                 }
@@ -190,8 +193,8 @@ namespace AvatarGo.Core
                     if (name.Length == 0) throw Error(line, "a joint needs a name");
                     if (_nameSet.Contains(name)) throw Error(line, $"joint name '{Shorten(name)}' is used twice");
                 }
-                string open = Next("{");
-                if (open != "{") throw Error(_tokenLine, $"expected '{{' to open joint '{Shorten(name)}', found '{Shorten(open)}'");
+                ReadOnlySpan<char> open = Next("{");
+                if (!(open.Length == 1 && open[0] == '{')) throw Error(_tokenLine, $"expected '{{' to open joint '{Shorten(name)}', found '{Shorten(open)}'");
 
                 int index = _names.Count;
                 _names.Add(name);
@@ -206,10 +209,10 @@ namespace AvatarGo.Core
             private BvhChannel[] ParseChannels(string joint)
             {
                 int line = _tokenLine;
-                string countText = Next("a channel count");
+                ReadOnlySpan<char> countText = Next("a channel count");
                 if (!int.TryParse(countText, NumberStyles.Integer, CultureInfo.InvariantCulture, out int count) || count < 0 || count > 6)
                     throw Error(line, $"channel count must be 0 to 6, found '{Shorten(countText)}'");
-                int available = _tokens.Length - _tokenIndex;
+                int available = _tokenCount - _tokenIndex;
                 if (available != count)
                     throw Error(line, $"CHANNELS {count} of joint '{Shorten(joint)}' lists {available} channel name(s)");
                 if (_channelTotal + count > MaxChannels) throw Error(line, $"more than {MaxChannels} channels (the reader's limit)");
@@ -217,10 +220,10 @@ namespace AvatarGo.Core
                 int seen = 0;
                 for (int i = 0; i < count; i++)
                 {
-                    string c = _tokens[_tokenIndex++];
+                    ReadOnlySpan<char> c = Token(_tokenIndex++);
                     if (!TryChannel(c, out channels[i])) throw Error(line, $"unknown channel '{Shorten(c)}'");
                     int bit = 1 << (int)channels[i];
-                    if ((seen & bit) != 0) throw Error(line, $"channel '{c}' is listed twice");
+                    if ((seen & bit) != 0) throw Error(line, $"channel '{c.ToString()}' is listed twice");
                     seen |= bit;
                 }
                 _channelTotal += count;
@@ -306,40 +309,72 @@ namespace AvatarGo.Core
                 return false;
             }
 
-            private bool Try(out string token)
+            private ReadOnlySpan<char> Token(int i) => _lines.Line.Slice(_tokenStarts[i], _tokenLengths[i]);
+
+            // The next token, reading lines as needed. The span is valid until the next call.
+            private bool Try(out ReadOnlySpan<char> token)
             {
-                while (_tokenIndex >= _tokens.Length)
+                while (_tokenIndex >= _tokenCount)
                 {
                     if (!_lines.Next())
                     {
-                        token = null;
+                        token = default;
                         return false;
                     }
-                    _tokens = _lines.Line.IsWhiteSpace() ? Array.Empty<string>() : _lines.Line.ToString().Split((char[])null, StringSplitOptions.RemoveEmptyEntries);
-                    _tokenIndex = 0;
+                    Tokenise(_lines.Line);
                     _tokenLine = LineNumber;
                 }
-                token = _tokens[_tokenIndex++];
+                token = Token(_tokenIndex++);
                 return true;
             }
 
-            private string Next(string expected)
+            // Splits on white space as string.Split(null) does.
+            private void Tokenise(ReadOnlySpan<char> line)
             {
-                if (!Try(out string token)) throw Error(LineNumber + 1, $"the file ends where '{expected}' was expected (truncated?)");
+                _tokenCount = 0;
+                _tokenIndex = 0;
+                int pos = 0;
+                while (NextField(line, ref pos, out int start, out int length))
+                {
+                    if (_tokenCount == _tokenStarts.Length)
+                    {
+                        Array.Resize(ref _tokenStarts, _tokenCount * 2);
+                        Array.Resize(ref _tokenLengths, _tokenCount * 2);
+                    }
+                    _tokenStarts[_tokenCount] = start;
+                    _tokenLengths[_tokenCount] = length;
+                    _tokenCount++;
+                }
+            }
+
+            private ReadOnlySpan<char> Next(string expected)
+            {
+                if (!Try(out ReadOnlySpan<char> token)) throw Error(LineNumber + 1, $"the file ends where '{expected}' was expected (truncated?)");
                 return token;
             }
 
+            // The rest of the line's tokens joined by single spaces (a joint's name).
             private string RestOfLine()
             {
-                string rest = string.Join(" ", _tokens, _tokenIndex, _tokens.Length - _tokenIndex);
-                _tokenIndex = _tokens.Length;
-                return rest;
+                if (_tokenIndex >= _tokenCount) return string.Empty;
+                int length = _tokenCount - _tokenIndex - 1;
+                for (int i = _tokenIndex; i < _tokenCount; i++) length += _tokenLengths[i];
+                var chars = new char[length];
+                int at = 0;
+                for (int i = _tokenIndex; i < _tokenCount; i++)
+                {
+                    if (at > 0) chars[at++] = ' ';
+                    Token(i).CopyTo(new Span<char>(chars, at, _tokenLengths[i]));
+                    at += _tokenLengths[i];
+                }
+                _tokenIndex = _tokenCount;
+                return new string(chars);
             }
 
             private float Number(int line)
             {
-                if (_tokenIndex >= _tokens.Length) throw Error(line, "OFFSET takes 3 numbers; found fewer");
-                string t = _tokens[_tokenIndex++];
+                if (_tokenIndex >= _tokenCount) throw Error(line, "OFFSET takes 3 numbers; found fewer");
+                ReadOnlySpan<char> t = Token(_tokenIndex++);
                 if (!float.TryParse(t, NumberStyles.Float, CultureInfo.InvariantCulture, out float v) || !(Math.Abs(v) <= MaxMagnitude))
                     throw Error(line, $"'{Shorten(t)}' is not a number within ±{MaxMagnitude.ToString(CultureInfo.InvariantCulture)}");
                 return v;
@@ -358,23 +393,21 @@ namespace AvatarGo.Core
                 return candidate;
             }
 
-            private static bool Is(string token, string keyword) => string.Equals(token, keyword, StringComparison.OrdinalIgnoreCase);
+            private static bool Is(ReadOnlySpan<char> token, string keyword) => token.Equals(keyword.AsSpan(), StringComparison.OrdinalIgnoreCase);
 
             // Error messages quote file content; a long token (a 20 MB joint name) is cut so that the message stays short.
             private static string Shorten(string s) => s.Length <= 60 ? s : s.Substring(0, 60) + "...";
 
-            private static bool TryChannel(string name, out BvhChannel channel)
+            private static string Shorten(ReadOnlySpan<char> s) => s.Length <= 60 ? s.ToString() : s.Slice(0, 60).ToString() + "...";
+
+            private static readonly string[] ChannelNames = { "Xposition", "Yposition", "Zposition", "Xrotation", "Yrotation", "Zrotation" };
+
+            private static bool TryChannel(ReadOnlySpan<char> name, out BvhChannel channel)
             {
-                switch (name.ToLowerInvariant())
-                {
-                    case "xposition": channel = BvhChannel.Xposition; return true;
-                    case "yposition": channel = BvhChannel.Yposition; return true;
-                    case "zposition": channel = BvhChannel.Zposition; return true;
-                    case "xrotation": channel = BvhChannel.Xrotation; return true;
-                    case "yrotation": channel = BvhChannel.Yrotation; return true;
-                    case "zrotation": channel = BvhChannel.Zrotation; return true;
-                    default: channel = default; return false;
-                }
+                for (int i = 0; i < ChannelNames.Length; i++)
+                    if (Is(name, ChannelNames[i])) { channel = (BvhChannel)i; return true; }
+                channel = default;
+                return false;
             }
 
             private FormatException Error(int line, string problem) => new FormatException($"{_source}:{line}: {problem}");

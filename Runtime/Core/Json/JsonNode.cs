@@ -59,6 +59,26 @@ namespace AvatarGo.Core
         /// </summary>
         public FormatException Error(string problem) => new FormatException(_source == null ? problem : $"{_source}:{Line}: {problem}");
 
+        /// <summary>
+        /// A string from the text made fit for a one-line message: control characters escaped (<c>\n</c>, <c>\u0007</c>)
+        /// and cut after 40 characters.
+        /// </summary>
+        internal static string Printable(string s)
+        {
+            var sb = new StringBuilder(Math.Min(s.Length, 48));
+            for (int i = 0; i < s.Length && i < 40; i++)
+            {
+                char c = s[i];
+                if (c == '\n') sb.Append("\\n");
+                else if (c == '\r') sb.Append("\\r");
+                else if (c == '\t') sb.Append("\\t");
+                else if (c < ' ' || c == 0x7f || c == '\u2028' || c == '\u2029' || char.IsSurrogate(c)) sb.Append("\\u").Append(((int)c).ToString("x4", CultureInfo.InvariantCulture));
+                else sb.Append(c);
+            }
+            if (s.Length > 40) sb.Append("...");
+            return sb.ToString();
+        }
+
         /// <summary>The member names of an object, in document order (empty otherwise).</summary>
         public IReadOnlyList<string> Keys => (IReadOnlyList<string>)_order ?? Array.Empty<string>();
 
@@ -339,7 +359,7 @@ namespace AvatarGo.Core
             private static string Describe(char c) =>
                 c < ' ' || c == 0x7f || char.IsSurrogate(c) || char.IsWhiteSpace(c) ? $"U+{(int)c:X4}" : $"'{c}'";
 
-            private static string Shorten(string s) => s.Length <= 40 ? s : s.Substring(0, 40) + "...";
+            private static string Shorten(string s) => Printable(s);
 
             private int Hex4()
             {
