@@ -19,7 +19,7 @@ namespace AvatarGo.Core
     /// <see cref="MaxJoints"/> joints (End Sites included), <see cref="MaxChannels"/> channels, <see cref="MaxValues"/>
     /// channel values in all, lines of <see cref="MaxLineLength"/> characters, every number within
     /// ±<see cref="MaxMagnitude"/>, and a frame time from <see cref="MinFrameTime"/> to <see cref="MaxFrameTime"/> s.
-    /// See Documentation~/formats.md.
+    /// See Documentation~/robustness.md.
     /// </remarks>
     public static class BvhReader
     {

@@ -26,7 +26,7 @@ namespace AvatarGo.Core
     /// newer). A symbolic link is followed (its final target is replaced, the link stays) where the runtime can read
     /// links (.NET 6 and newer). Unity's Mono and IL2CPP can do neither: there a replaced file gets the process's
     /// default permissions and a link is replaced by a regular file (the file it pointed to is left unchanged).
-    /// See Documentation~/building.md.</para>
+    /// See Documentation~/robustness.md.</para>
     /// <para>The data is on disk before the rename; the rename itself is atomic against a crash of the process and,
     /// on journaling file systems, of the machine, which may still lose the rename (the old file stays) but never
     /// leaves a torn one.</para>

@@ -18,9 +18,13 @@ namespace AvatarGo.Core
     /// </remarks>
     public sealed class JsonNode
     {
-        private readonly Dictionary<string, JsonNode> _members;
-        private readonly List<string> _order;
-        private readonly List<JsonNode> _items;
+        // Objects: keys and values in document order, exactly sized; an index only for objects of more than
+        // IndexedMembers members (small objects are searched: fewer objects to allocate and collect). Arrays: items.
+        private const int IndexedMembers = 8;
+        private string[] _keys;
+        private JsonNode[] _values;
+        private Dictionary<string, int> _index;
+        private JsonNode[] _items;
         private readonly string _source;
 
         /// <summary>The deepest nesting of arrays and objects <see cref="Parse(string)"/> accepts (64).</summary>
@@ -46,8 +50,6 @@ namespace AvatarGo.Core
             String = s;
             Number = n;
             Bool = b;
-            if (kind == JsonKind.Object) { _members = new Dictionary<string, JsonNode>(StringComparer.Ordinal); _order = new List<string>(); }
-            if (kind == JsonKind.Array) _items = new List<JsonNode>();
         }
 
         /// <summary>The 1-based line of the text where this value starts.</summary>
@@ -80,13 +82,23 @@ namespace AvatarGo.Core
         }
 
         /// <summary>The member names of an object, in document order (empty otherwise).</summary>
-        public IReadOnlyList<string> Keys => (IReadOnlyList<string>)_order ?? Array.Empty<string>();
+        public IReadOnlyList<string> Keys => _keys ?? Array.Empty<string>();
 
         /// <summary>The items of an array (empty otherwise).</summary>
-        public IReadOnlyList<JsonNode> Items => (IReadOnlyList<JsonNode>)_items ?? Array.Empty<JsonNode>();
+        public IReadOnlyList<JsonNode> Items => _items ?? Array.Empty<JsonNode>();
 
         /// <summary>The member <paramref name="name"/> of an object, or null.</summary>
-        public JsonNode this[string name] => _members != null && _members.TryGetValue(name, out JsonNode v) ? v : null;
+        public JsonNode this[string name]
+        {
+            get
+            {
+                if (_keys == null || name == null) return null;
+                if (_index != null) return _index.TryGetValue(name, out int i) ? _values[i] : null;
+                for (int i = 0; i < _keys.Length; i++)
+                    if (string.Equals(_keys[i], name, StringComparison.Ordinal)) return _values[i];
+                return null;
+            }
+        }
 
         /// <summary>The member as a number; throws <see cref="FormatException"/> when missing or not a number.</summary>
         public double GetNumber(string name)
@@ -108,7 +120,7 @@ namespace AvatarGo.Core
         public double[] GetNumbers(string name, int count)
         {
             JsonNode v = this[name];
-            if (v == null || v.Kind != JsonKind.Array || v._items.Count != count) throw (v ?? this).Error($"'{name}' must be an array of {count} numbers.");
+            if (v == null || v.Kind != JsonKind.Array || v._items.Length != count) throw (v ?? this).Error($"'{name}' must be an array of {count} numbers.");
             var result = new double[count];
             for (int i = 0; i < count; i++)
             {
@@ -209,28 +221,59 @@ namespace AvatarGo.Core
                 return true;
             }
 
+            // Members and items are gathered in lists reused per depth, then copied into exactly sized arrays.
+            private readonly List<string>[] _scratchKeys = new List<string>[MaxDepth + 2];
+            private readonly List<JsonNode>[] _scratchValues = new List<JsonNode>[MaxDepth + 2];
+
+            private List<T> Scratch<T>(List<T>[] lists, int depth)
+            {
+                List<T> list = lists[depth] ?? (lists[depth] = new List<T>());
+                list.Clear();
+                return list;
+            }
+
             private JsonNode Object(int depth)
             {
                 var node = Node(JsonKind.Object);
+                node._keys = System.Array.Empty<string>();
+                node._values = System.Array.Empty<JsonNode>();
                 _i++;
                 SkipSpace();
                 if (!AtEnd && _s[_i] == '}') { _i++; return node; }
+                List<string> keys = Scratch(_scratchKeys, depth);
+                List<JsonNode> values = Scratch(_scratchValues, depth);
+                Dictionary<string, int> index = null;
                 while (true)
                 {
                     SkipSpace();
                     if (AtEnd || _s[_i] != '"') throw Error("expected a member name in quotes");
                     string key = StringLiteral();
-                    if (node._members.ContainsKey(key)) throw Error($"member '{Shorten(key)}' appears twice");
+                    if (index == null && keys.Count == IndexedMembers)
+                    {
+                        index = new Dictionary<string, int>(StringComparer.Ordinal);
+                        for (int k = 0; k < keys.Count; k++) index.Add(keys[k], k);
+                    }
+                    if (index != null ? index.ContainsKey(key) : keys.Contains(key)) throw Error($"member '{Shorten(key)}' appears twice");
                     SkipSpace();
                     if (AtEnd || _s[_i] != ':') throw Error("expected ':'");
                     _i++;
                     SkipSpace();
-                    node._members[key] = Value(depth + 1);
-                    node._order.Add(key);
+                    index?.Add(key, keys.Count);
+                    keys.Add(key);
+                    values.Add(Value(depth + 1));
                     SkipSpace();
                     if (AtEnd) throw Error("unexpected end of text in an object");
                     if (_s[_i] == ',') { _i++; continue; }
-                    if (_s[_i] == '}') { _i++; return node; }
+                    if (_s[_i] == '}')
+                    {
+                        _i++;
+                        node._keys = keys.ToArray();
+                        node._values = values.ToArray();
+                        node._index = index;
+                        keys.Clear();
+                        values.Clear();
+                        return node;
+                    }
                     throw Error("expected ',' or '}'");
                 }
             }
@@ -238,17 +281,25 @@ namespace AvatarGo.Core
             private JsonNode Array(int depth)
             {
                 var node = Node(JsonKind.Array);
+                node._items = System.Array.Empty<JsonNode>();
                 _i++;
                 SkipSpace();
                 if (!AtEnd && _s[_i] == ']') { _i++; return node; }
+                List<JsonNode> items = Scratch(_scratchValues, depth);
                 while (true)
                 {
                     SkipSpace();
-                    node._items.Add(Value(depth + 1));
+                    items.Add(Value(depth + 1));
                     SkipSpace();
                     if (AtEnd) throw Error("unexpected end of text in an array");
                     if (_s[_i] == ',') { _i++; continue; }
-                    if (_s[_i] == ']') { _i++; return node; }
+                    if (_s[_i] == ']')
+                    {
+                        _i++;
+                        node._items = items.ToArray();
+                        items.Clear();
+                        return node;
+                    }
                     throw Error("expected ',' or ']'");
                 }
             }

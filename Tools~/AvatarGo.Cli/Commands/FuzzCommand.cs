@@ -33,6 +33,7 @@ public sealed class FuzzCommand : ICommand
           --no-minimize     save failures as found
           --slow-ms MS      the time an input may take (default 1000)
           --replay INDEX    run only the INDEX-th generated input (reproduces a crash of the process)
+          --out FILE        with --replay: also write that input to FILE
           --trace           print every input's size, time and outcome on standard error
         Exit codes: 0 no failure, 1 failures found, 2 bad arguments, 3 an input hung (saved, run stopped).
         """;
@@ -49,9 +50,11 @@ public sealed class FuzzCommand : ICommand
         double slowMs = a.Double("slow-ms", 1000);
         string replay = a.String("replay");
         bool trace = a.Flag("trace");
+        string outFile = a.String("out");
         a.ThrowOnUnknown(0);
         if (!(seconds > 0)) throw new UsageException("--seconds must be positive");
         if (!(inputs > 0)) throw new UsageException("--inputs must be positive");
+        if (outFile != null && replay == null) throw new UsageException("--out goes with --replay");
 
         var seeds = new FuzzSeeds();
         corpus ??= seeds.DefaultCorpus;
@@ -76,6 +79,7 @@ public sealed class FuzzCommand : ICommand
                     var outcome = runner.Replay(long.Parse(replay, CultureInfo.InvariantCulture), out string input);
                     stdout.WriteLine($"{t} input {replay} of seed {seed} ({input.Length:N0} chars): {(outcome.Bucket == null ? (outcome.Parsed ? "parsed" : "refused with a FormatException") : "FAILS: " + outcome.Description)} in {outcome.Milliseconds:0.0} ms");
                     if (outcome.Bucket != null) exit = 1;
+                    if (outFile != null) File.WriteAllText(outFile, input);
                     continue;
                 }
                 stderr.WriteLine($"fuzzing {t} for up to {seconds:0} s (seed {seed}, corpus {corpus})");
@@ -93,6 +97,8 @@ public sealed class FuzzCommand : ICommand
                 $"{r.Target,-10} {r.Inputs,9} {r.Generated,10} {r.Parsed,8} {r.Failures,9} {r.Findings.Count,6} {r.Seconds,8:0.0} {r.Inputs / Math.Max(r.Seconds, 1e-9),9:0} {r.SlowestMilliseconds,11:0.0}"));
             if (r.Failures > 0) exit = 1;
         }
+        foreach (FuzzReport r in reports)
+            if (r.SlowestInput != null) stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{r.Target}: slowest input {r.SlowestMilliseconds:0.0} ms: {r.SlowestInput}"));
         foreach (FuzzReport r in reports)
             foreach (FuzzFinding f in r.Findings)
             {

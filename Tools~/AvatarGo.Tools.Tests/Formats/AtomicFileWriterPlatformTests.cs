@@ -8,7 +8,7 @@ namespace AvatarGo.Tools.Tests.Formats;
 
 /// <summary>
 /// What <see cref="AtomicFileWriter"/> keeps where the runtime can (.NET 7+ here; Unity's Mono and IL2CPP cannot,
-/// see Documentation~/building.md): the target's Unix permissions, and a symbolic link, whose final target is replaced
+/// see Documentation~/robustness.md): the target's Unix permissions, and a symbolic link, whose final target is replaced
 /// while the link stays a link. Linux and macOS only (Windows keeps attributes and access rights through its file
 /// replace, and symbolic links need privileges there).
 /// </summary>
