@@ -23,8 +23,11 @@ namespace AvatarGo.Core
         /// <summary>The <c>format</c> member every profile file carries.</summary>
         public const string FormatName = "avatargo-calibration-profile";
 
-        /// <summary>The longest profile text read, in characters (1 MiB; a saved profile is about 3 KB).</summary>
-        public const int MaxFileLength = 1 << 20;
+        /// <summary>
+        /// The longest profile text read, in characters (64 Ki; a saved profile is about 3 KB). JSON builds a node per
+        /// value, so this also bounds the parse: the largest accepted text parses in milliseconds.
+        /// </summary>
+        public const int MaxFileLength = 64 << 10;
 
         /// <summary>The smallest avatar scale a profile may hold (an avatar modelled in millimetres is 0.001).</summary>
         public const float MinAvatarScale = 1e-3f;

@@ -46,7 +46,7 @@ internal sealed class FuzzTarget
 
     /// <summary>
     /// The longest generated input, in characters: 4 Mi for the line formats (beyond their line limit), 1.5 Mi for the
-    /// JSON ones (beyond the profiles' 1 MiB limit; JSON builds a node per value, so a 4 MB array takes most of a second).
+    /// JSON ones (far beyond the profiles' 64 Ki limit; JSON builds a node per value, so a 4 MB array takes most of a second).
     /// </summary>
     public int MaxInputLength { get; }
 
