@@ -44,7 +44,7 @@ public sealed class EvaluateCommand : ICommand
         using (SessionReader reader = SessionReader.Open(path))
         {
             HumanoidMap avatar = avatarFile != null
-                ? HumanoidNaming.Detect(BvhReader.ReadFile(avatarFile, new BvhReadOptions { ToMetres = true }).Skeleton)
+                ? CalibrateCommand.AvatarFrom(avatarFile)
                 : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no ground-truth skeleton; give --avatar FILE");
             if (legScale != 1f || armScale != 1f) avatar = Proportions.ScaleLimbs(avatar, legScale, armScale);
             report = SessionEvaluator.Evaluate(reader, mode, avatar);

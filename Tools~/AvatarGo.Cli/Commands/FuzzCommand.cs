@@ -4,6 +4,7 @@ using System.Globalization;
 using System.IO;
 using System.Threading;
 using AvatarGo.Cli.Fuzzing;
+using AvatarGo.Core;
 
 namespace AvatarGo.Cli.Commands;
 
@@ -79,7 +80,7 @@ public sealed class FuzzCommand : ICommand
                     var outcome = runner.Replay(long.Parse(replay, CultureInfo.InvariantCulture), out string input);
                     stdout.WriteLine($"{t} input {replay} of seed {seed} ({input.Length:N0} chars): {(outcome.Bucket == null ? (outcome.Parsed ? "parsed" : "refused with a FormatException") : "FAILS: " + outcome.Description)} in {outcome.Milliseconds:0.0} ms");
                     if (outcome.Bucket != null) exit = 1;
-                    if (outFile != null) File.WriteAllText(outFile, input);
+                    if (outFile != null) AtomicFileWriter.WriteAllText(outFile, input);
                     continue;
                 }
                 stderr.WriteLine($"fuzzing {t} for up to {seconds:0} s (seed {seed}, corpus {corpus})");

@@ -101,6 +101,30 @@ public class FileSafetyCommandTests
         Assert.That(Files(), Is.EqualTo(new[] { "report.json", "s.agsession" }));
     }
 
+    [Test]
+    public void CommandsGivenASkeletonWithoutHumanoidBonesSayItInOneLine()
+    {
+        string bvh = Path.Combine(_dir, "stick.bvh");
+        File.WriteAllText(bvh, "HIERARCHY\nROOT a\n{\nOFFSET 0 0 0\nCHANNELS 3 Xrotation Yrotation Zrotation\n}\nMOTION\nFrames: 2\nFrame Time: 0.1\n0 0 0\n0 0 0\n");
+        string session = Path.Combine(_dir, "s.agsession");
+        Assert.That(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mixamo_fingers_30fps.bvh"), "--out", session).ExitCode, Is.EqualTo(0));
+        foreach (string[] args in new[]
+        {
+            new[] { "simulate", "--bvh", bvh, "--out", Path.Combine(_dir, "x.agsession") },
+            new[] { "calibrate", session, "--avatar", bvh },
+            new[] { "evaluate", session, "--avatar", bvh },
+            new[] { "bench", "--bvh", bvh, "--frames", "10", "--runs", "1" },
+            new[] { "fingers", "--hand", bvh, "--profile", "vive-wand" },
+        })
+        {
+            var r = CliRunner.Run(args);
+            Assert.That(r.ExitCode, Is.EqualTo(1), string.Join(" ", args) + "\n" + r);
+            Assert.That(r.Stderr.TrimEnd().Split('\n').Length, Is.EqualTo(1), r.Stderr);
+            StringAssert.StartsWith("avatargo " + args[0] + ": ", r.Stderr);
+        }
+        Assert.That(File.Exists(Path.Combine(_dir, "x.agsession")), Is.False);
+    }
+
     // ---- Child processes -------------------------------------------------------------------------------
 
     private static Process StartCli(params string[] args)
