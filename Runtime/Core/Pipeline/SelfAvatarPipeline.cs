@@ -188,7 +188,7 @@ namespace AvatarGo.Core
                 if (state.Placement == HandPlacement.PalmOnController)
                     ActiveProfile = ActiveProfile.WithJointInDevice(BodyRoles.Hand(side), _hands[(int)side].WristInController(Settings.Hand(side).Controller));
             }
-            _mapper = new BodyTargetMapper(ActiveProfile, _devices, scaled, calibrationPose);
+            _mapper = new BodyTargetMapper(ActiveProfile, _devices, scaled, calibrationPose, Settings.KneeHints, Settings.ElbowHints);
             _ik = new FullBodyIk(scaled, calibrationPose);
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {
@@ -211,7 +211,7 @@ namespace AvatarGo.Core
             if (controller == null) state.NoFingerIkReason = "no controller profile is set for this hand";
             else if (HandModel.CanModel(_calibrator.ScaledAvatar, side, out string reason))
             {
-                _hands[s] = new HandModel(_calibrator.ScaledAvatar, side);
+                _hands[s] = new HandModel(_calibrator.ScaledAvatar, side, _calibrator.AvatarPose); // the T-pose's straight fingers open the hand
                 _fingers[s] = new FingerSolver(_hands[s], controller);
                 state.NoFingerIkReason = null;
             }
