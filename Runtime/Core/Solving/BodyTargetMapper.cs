@@ -9,21 +9,25 @@ namespace AvatarGo.Core
     /// paper's "Avatar movement"): each joint's world pose is <c>device * JointInDevice</c>, i.e.
     /// <c>p_t(J) = p_t(T) + R_t(T) R0(T)^-1 v0(TJ)</c> and <c>R_t(J) = R_t(T) R0(T)^-1 R0(J)</c>, for the root, the feet,
     /// the head and the wrists; the spine bend is the rotation from w0 (turned with the root) to wt; knee and elbow hints
-    /// follow the feet and hands. The same code runs exact and fixed profiles. Allocation-free per frame.
+    /// (<see cref="KneeHintModel"/>, <see cref="ElbowHintModel"/>) come from the pelvis, foot and hand devices. The same
+    /// code runs exact and fixed profiles. Allocation-free per frame.
     /// </summary>
     /// <remarks>
-    /// w is measured between the hips and head joints the devices give (rather than between the devices
+    /// <para>w is measured between the hips and head joints the devices give (rather than between the devices
     /// themselves, as the paper writes it): the same vector up to the constant device offsets, but without the
-    /// HMD's lever arm, so that nodding does not bend the back.
+    /// HMD's lever arm, so that nodding does not bend the back.</para>
+    /// <para>A hint is the end joint plus one limb length along a bend direction; only its part square to the limb's axis
+    /// matters to <see cref="TwoBoneIk"/>. The directions are functions of this frame's devices only (continuous, no
+    /// state, frame-rate independent) and of landmarks of the calibration pose carried by the devices' turns since then,
+    /// never of a bone's local axis. While the pelvis tracker or the HMD is lost, the hints use their last pose.</para>
     /// </remarks>
     public sealed class BodyTargetMapper
     {
         /// <summary>
-        /// The weight of the fallback direction in the knee and elbow hints, against the main direction's weight: the size
-        /// of its component off the limb's axis (1 when square to it). 0.26 = sin 15°, the typical angle between the
-        /// forearm and the hand (wrist flexion and deviation in everyday tasks) and between the shin and the toes' plane:
-        /// the hand (toes) decide wherever they point farther than that off the limb's axis, and the fallback where they
-        /// point along it and say nothing.
+        /// The weight of the fallback direction in the elbow hint (and the toes' knee hint), against the hand's (toes')
+        /// weight, which is the size of its component off the limb's axis (1 when square to it). 0.26 = sin 15°, the typical
+        /// angle between the forearm and the hand (wrist flexion and deviation in everyday tasks): the hand decides wherever
+        /// it points farther than that off the arm's axis, the fallback where it points along it and says nothing.
         /// </summary>
         public const float FallbackWeight = 0.26f;
 
