@@ -23,9 +23,13 @@ public class PlantedDefectTests
     [TearDown]
     public void DeleteCopy() => _copy.Dispose();
 
-    private GateResult Gate(string[] configurations, params string[] assemblies) =>
-        GateBuild.Run(_copy.Root, AvatarGo.UnityGate.Program.NuGetPackageRoot, configurations.Select(UnityConfiguration.Named), _copy.OutDir,
+    private GateResult Gate(string[] configurations, params string[] assemblies)
+    {
+        GateResult result = GateBuild.Run(_copy.Root, AvatarGo.UnityGate.Program.NuGetPackageRoot, configurations.Select(UnityConfiguration.Named), _copy.OutDir,
             assemblies.Length > 0 ? assemblies : null);
+        TestContext.Out.WriteLine(result.Output + result.Describe()); // what was compiled and what reused, in the test's output
+        return result;
+    }
 
     private static GateDiagnostic AssertSingleError(GateResult result, string code, string file, params string[] fragments)
     {
