@@ -45,7 +45,7 @@ public static class SurfaceUsage
                 if (!Directory.Exists(dir)) continue;
                 var trees = Directory.GetFiles(dir, "*.cs", SearchOption.AllDirectories).OrderBy(f => f, StringComparer.Ordinal)
                     .Select(f => CSharpSyntaxTree.ParseText(File.ReadAllText(f), options, f)).ToList();
-                var compilation = CSharpCompilation.Create(assembly.Name, trees, NetStandardReferences(),
+                var compilation = CSharpCompilation.Create(assembly.Name, trees, TargetingPack.NetStandard21,
                     new CSharpCompilationOptions(OutputKind.DynamicallyLinkedLibrary));
                 foreach (SyntaxTree tree in trees)
                 {
@@ -120,7 +120,7 @@ public static class SurfaceUsage
                 if (!done.Add(built.Projects.Graph.Of(plan.Configuration.Name, a.Name).Folder)) continue;
                 var options = new CSharpParseOptions(LanguageVersion.CSharp9, preprocessorSymbols: a.Defines);
                 var trees = a.Sources.Select(s => CSharpSyntaxTree.ParseText(File.ReadAllText(Path.Combine(packageRoot, s)), options, s)).ToList();
-                var references = NetStandardReferences()
+                var references = TargetingPack.NetStandard21
                     .Concat(a.References.Select(r => built.Built.Reference(built.Projects.Graph.Of(plan.Configuration.Name, r))))
                     .Concat(a.PrecompiledReferences.Select(p => MetadataReference.CreateFromFile(p)));
                 var compilation = CSharpCompilation.Create(a.Name, trees, references,
@@ -167,8 +167,6 @@ public static class SurfaceUsage
         }
     }
 
-    /// <summary>The .NET Standard 2.1 reference assemblies (the same the generated projects compile against).</summary>
-    public static IReadOnlyList<MetadataReference> NetStandardReferences() => TargetingPack.NetStandard21;
 
     private static readonly Dictionary<string, string> PairedOperators = new(StringComparer.Ordinal)
     {

@@ -48,7 +48,10 @@ public class UnityGateTests
             "Unity 2021.3's ext.nunit 1.0.6 is a net35 build");
         string project = File.ReadAllText(Directory.GetFiles(_gate.OutDir, "AvatarGo.Core.Tests.*.csproj", SearchOption.AllDirectories).First());
         Assert.That(project, Does.Contain("<TargetFramework>netstandard2.1</TargetFramework>").And.Contain("<LangVersion>9.0</LangVersion>")
-            .And.Contain("<TreatWarningsAsErrors>true</TreatWarningsAsErrors>"));
+            .And.Contain("<TreatWarningsAsErrors>true</TreatWarningsAsErrors>")
+            .And.Contain("<DisableImplicitConfigurationDefines>true</DisableImplicitConfigurationDefines>")
+            .And.Contain("<DisableImplicitFrameworkDefines>true</DisableImplicitFrameworkDefines>"),
+            "Unity defines no RELEASE and no NETSTANDARD2_1_OR_GREATER: the SDK must not add them");
     }
 
     [Test]
