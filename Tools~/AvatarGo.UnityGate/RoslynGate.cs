@@ -31,7 +31,8 @@ public static class RoslynGate
         TimeSpan cpuBefore = Process.GetCurrentProcess().TotalProcessorTime;
         var steps = new Dictionary<GateAssembly, Task<Step>>();
         foreach (GateAssembly a in graph.Assemblies) steps[a] = CompileAfterReferences(packageRoot, a, steps);
-        Task.WaitAll(steps.Values.ToArray<Task>());
+        // Rethrows the first failure itself (a GateException for a missing targeting pack, say), not an AggregateException.
+        Task.WhenAll(steps.Values).GetAwaiter().GetResult();
 
         var errors = new List<GateDiagnostic>();
         var log = new StringBuilder();
@@ -57,7 +58,7 @@ public static class RoslynGate
 
     private static async Task<Step> CompileAfterReferences(string packageRoot, GateAssembly a, IReadOnlyDictionary<GateAssembly, Task<Step>> steps)
     {
-        Step[] references = await Task.WhenAll(a.References.Select(r => steps[r]));
+        Step[] references = await Task.WhenAll(a.References.Select(r => steps[r])).ConfigureAwait(false);
         int failed = Array.FindIndex(references, r => !r.Outcome.Succeeded);
         if (failed >= 0)
             return new Step(new CompiledAssembly { Errors = Array.Empty<GateDiagnostic>() }, false, $"not compiled, its reference {a.References[failed].Plan.Name} failed");
@@ -66,7 +67,7 @@ public static class RoslynGate
         {
             fresh = true;
             return RoslynCompiler.Compile(packageRoot, a, a.References.Select((r, i) => (r.Plan.Name + ".dll", references[i].Outcome.Reference)));
-        }, LazyThreadSafetyMode.ExecutionAndPublication)).Value);
+        }, LazyThreadSafetyMode.ExecutionAndPublication)).Value).ConfigureAwait(false);
         return new Step(outcome, !fresh, fresh
             ? $"compiled in {outcome.Seconds:0.00} s, {outcome.Errors.Count} error(s)"
             : $"compiled earlier in this process, {outcome.Errors.Count} error(s)");
