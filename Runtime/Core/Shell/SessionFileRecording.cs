@@ -30,6 +30,7 @@ namespace AvatarGo.Core
         {
             if (path == null) throw new ArgumentNullException(nameof(path));
             if (header == null) throw new ArgumentNullException(nameof(header));
+            Header = header;
             Path = System.IO.Path.GetFullPath(path);
             PartialPath = Path + PartialSuffix;
             Directory.CreateDirectory(System.IO.Path.GetDirectoryName(Path));
@@ -46,6 +47,9 @@ namespace AvatarGo.Core
                 throw;
             }
         }
+
+        /// <summary>The devices recorded (every frame must be made for them).</summary>
+        public SessionHeader Header { get; }
 
         /// <summary>The file the recording becomes when completed.</summary>
         public string Path { get; }

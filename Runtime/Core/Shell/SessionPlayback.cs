@@ -90,6 +90,20 @@ namespace AvatarGo.Core
             return stepped;
         }
 
+        /// <summary>
+        /// Delivers the current frame again (the first frame if none was delivered yet) with no events but those not delivered
+        /// yet (a frame's events go with its first delivery): a second read in the same application frame, or a stepped source
+        /// read between steps. Allocation-free.
+        /// </summary>
+        public void Repeat(SessionFrame output)
+        {
+            CheckOutput(output);
+            _pending.Clear();
+            if (!_hasCurrent) TakeNext();
+            if (!_currentDelivered) for (int e = 0; e < _current.Events.Count; e++) _pending.Add(_current.Events[e]);
+            Deliver(output);
+        }
+
         /// <summary>Closes the session.</summary>
         public void Dispose()
         {

@@ -121,6 +121,16 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void MessagesAreBrokenIntoLinesAtSpaces()
+        {
+            Assert.That(TextLines.Wrap("Stand in T-pose, arms level, and press a trigger.", 16), Is.EqualTo("Stand in T-pose,\narms level, and\npress a trigger."));
+            Assert.That(TextLines.Wrap("a verylongwordindeed b", 6), Is.EqualTo("a\nverylongwordindeed\nb"), "a longer word stays whole");
+            Assert.That(TextLines.Wrap("one\r\ntwo  three", 40), Is.EqualTo("one\ntwo three"));
+            Assert.That(TextLines.Wrap(null, 5), Is.Empty);
+            Assert.Throws<ArgumentOutOfRangeException>(() => TextLines.Wrap("x", 0));
+        }
+
+        [Test]
         public void SavedFilesAreNamedPerAvatarAndOnlyFitTheirAvatar()
         {
             Assert.That(AvatarGoFiles.ProfileFileName("Ready Player Me/ä 1"), Is.EqualTo("calibration-Ready_Player_Me___1.json"));

@@ -82,6 +82,21 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void ASecondReadInTheSameFrameRepeatsTheFrameWithoutItsEvents()
+        {
+            using SessionPlayback playback = Play(Tiny());
+            var output = new SessionFrame(playback.Header);
+            playback.Repeat(output);
+            Assert.That(output.Samples[0].Pose.Position.X, Is.EqualTo(0f), "before anything else: the first frame");
+            for (int i = 0; i < 3; i++) playback.Step(output);
+            Assert.That(output.Events, Has.Count.EqualTo(1), "frame 3's press");
+            playback.Repeat(output);
+            Assert.That(output.Samples[0].Pose.Position.X, Is.EqualTo(3f));
+            Assert.That(output.Time, Is.EqualTo(0.3).Within(1e-9));
+            Assert.That(output.Events, Is.Empty, "the press went with the first delivery");
+        }
+
+        [Test]
         public void LoopingStartsAgainWithTimesThatKeepIncreasing()
         {
             using SessionPlayback playback = Play(Tiny(), loop: true);
