@@ -23,11 +23,14 @@ namespace AvatarGo.Simulation
         private readonly SimulationOptions _options;
 
         /// <summary>Prepares a simulation of <paramref name="clip"/> (lengths in metres) worn by its own skeleton.</summary>
-        /// <exception cref="ArgumentException">The clip's skeleton lacks a required humanoid bone.</exception>
+        /// <exception cref="ArgumentException">The clip has no frames or is too long to simulate, or its skeleton lacks a required humanoid bone.</exception>
         public SessionSimulator(BvhClip clip, SimulationOptions options = null, HumanoidMap map = null)
         {
             _clip = clip ?? throw new ArgumentNullException(nameof(clip));
+            if (clip.FrameCount == 0) throw new ArgumentException("The clip has no frames (Frames: 0): there is no motion to simulate.", nameof(clip));
             _options = options ?? new SimulationOptions();
+            double frames = (_options.TPoseSeconds + _options.WalkInSeconds + _options.BlendSeconds + clip.FrameCount * (double)clip.FrameTime) * _options.Rate;
+            if (!(frames < int.MaxValue)) throw new ArgumentException($"The clip is too long to simulate at {_options.Rate} Hz ({(long)Math.Min(frames, long.MaxValue)} frames).", nameof(clip));
             _map = map ?? HumanoidNaming.Detect(clip.Skeleton);
             _map.RequireComplete(nameof(clip));
         }

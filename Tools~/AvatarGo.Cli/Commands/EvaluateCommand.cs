@@ -63,7 +63,7 @@ public sealed class EvaluateCommand : ICommand
         using (SessionReader reader = SessionReader.Open(path))
         {
             HumanoidMap avatar = avatarFile != null
-                ? HumanoidNaming.Detect(BvhReader.ReadFile(avatarFile, new BvhReadOptions { ToMetres = true }).Skeleton)
+                ? CalibrateCommand.AvatarFrom(avatarFile)
                 : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no ground-truth skeleton; give --avatar FILE");
             if (legScale != 1f || armScale != 1f) avatar = Proportions.ScaleLimbs(avatar, legScale, armScale);
             report = SessionEvaluator.Evaluate(reader, settings, avatar, null, disturbance);
@@ -74,7 +74,7 @@ public sealed class EvaluateCommand : ICommand
             return 1;
         }
         Print(report, stdout);
-        if (json != null) File.WriteAllText(json, ToJson(report));
+        if (json != null) AtomicFileWriter.WriteAllText(json, ToJson(report)); // whole or not at all: a failure leaves an older OUT as it was
         return 0;
     }
 
