@@ -23,7 +23,8 @@ namespace AvatarGo
     /// look at it), update mode <c>Normal</c> if it was the physics mode, no root motion (the root is placed here, in
     /// <c>Update</c>, before the Animator runs), the feet pivot at the body (<c>feetPivotActive</c> 0: the body is placed
     /// explicitly). <c>OnAnimatorIK</c> is only called for a controller layer with IK Pass on: an Animator without a
-    /// controller gets the package's <c>AvatarGoIKPass</c> controller (one layer, IK Pass on, no states).</para>
+    /// controller gets the package's <c>AvatarGoIKPass</c> controller (one layer, IK Pass on, one empty state so that the layer
+    /// plays: Unity calls OnAnimatorIK only for a playing layer), from the inspector field or else from Resources.</para>
     /// </remarks>
     [AddComponentMenu("XR/AvatarGo/Animator IK Driver")]
     [HelpURL(AvatarGoDocs.Manual + "animator-ik-driver.md")]
@@ -34,13 +35,16 @@ namespace AvatarGo
     {
         private static readonly HumanoidBone[] GoalBones = { HumanoidBone.LeftFoot, HumanoidBone.RightFoot, HumanoidBone.LeftHand, HumanoidBone.RightHand };
 
+        /// <summary>The package's IK Pass controller, under <c>Runtime/Animation/Resources</c>: one layer with IK Pass on and one empty state.</summary>
+        public const string IKPassResource = "AvatarGoIKPass";
+
         // Frames without an IK pass (while there is a pose to drive) before the missing IK Pass is reported.
         private const int FramesWithoutIKPass = 30;
 
         [SerializeField, Tooltip("The calibrator whose pipeline drives this avatar (found in the parents when empty).")]
         private AvatarGoCalibrator m_Calibrator;
 
-        [SerializeField, Tooltip("Given to an Animator without a controller: a controller with an IK Pass layer (the package's AvatarGoIKPass).")]
+        [SerializeField, Tooltip("Given to an Animator without a controller: a controller with an IK Pass layer. Empty: the package's AvatarGoIKPass (loaded from Resources).")]
         private RuntimeAnimatorController m_IKPassController = null;
 
         [SerializeField, Range(0f, 1f), Tooltip("Weight of the hand goals (position and rotation).")]
@@ -198,7 +202,10 @@ namespace AvatarGo
                 return Fail("this component must be on the GameObject of the calibrator's Animator (OnAnimatorIK is only sent there)");
             if (_animator.runtimeAnimatorController == null)
             {
-                if (m_IKPassController == null) return Fail("the Animator has no controller and no IK Pass controller is set (assign the package's AvatarGoIKPass)");
+                // The package's controller ships in a Resources folder, so that a driver added at run time (by the calibrator)
+                // finds it without a reference.
+                if (m_IKPassController == null) m_IKPassController = Resources.Load<RuntimeAnimatorController>(IKPassResource);
+                if (m_IKPassController == null) return Fail($"the Animator has no controller and the package's {IKPassResource} controller is missing (assign a controller with an IK Pass layer)");
                 _animator.runtimeAnimatorController = m_IKPassController;
             }
             _animator.cullingMode = AnimatorCullingMode.AlwaysAnimate;

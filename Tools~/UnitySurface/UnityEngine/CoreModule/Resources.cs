@@ -8,5 +8,8 @@ namespace UnityEngine
         // Throws ArgumentException for a name the editor does not have: the built-in font is "Arial.ttf" until 2022.1 and
         // "LegacyRuntime.ttf" from 2022.2 (trap T9).
         public static T GetBuiltinResource<T>(string path) where T : Object => throw null;
+
+        // A path under any Resources folder (packages' included), without its extension; null when there is none.
+        public static T Load<T>(string path) where T : Object => throw null;
     }
 }
