@@ -244,7 +244,7 @@ namespace AvatarGo.Core.Tests
         public void BvhWriteFileIsAtomic()
         {
             var skeleton = new Skeleton(new[] { "Hips", "Head" }, new[] { -1, 0 }, new[] { RigidPose.Identity, new RigidPose(new Vector3(0, 1, 0), Quaternion.Identity) });
-            BvhClip clip = BvhClip.FromPoses(skeleton, new[] { new[] { RigidPose.Identity, RigidPose.Identity } }, 1f / 30);
+            BvhClip clip = BvhClip.FromPoses(skeleton, new[] { new[] { RigidPose.Identity, skeleton.GetRestLocal(1) } }, 1f / 30);
             string path = Existing("out.bvh", "old");
             BvhWriter.WriteFile(path, clip);
             Assert.That(BvhReader.ReadFile(path).Skeleton.JointCount, Is.EqualTo(2));

