@@ -100,7 +100,7 @@ namespace AvatarGo
             if (!SetUp()) return;
             SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
             SkeletonPose pose = pipeline?.Pose;
-            if (pose == null) return;
+            if (pose == null || pipeline.Profile == null) return;
             if (!ReferenceEquals(pipeline.ScaledAvatar, _avatar)) Retarget(pipeline.ScaledAvatar);
             // The root where the pipeline put it, scaled to the wearer, before the Animator evaluates.
             _binding.ApplyRoot(pose.World[0], m_Calibrator.TrackingSpace, pipeline.Profile.AvatarScale);

@@ -49,7 +49,7 @@ namespace AvatarGo
             HumanoidBinding binding = m_Calibrator.Binding;
             SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
             SkeletonPose pose = pipeline?.Pose;
-            if (binding == null || pose == null || binding.Root == null) return;
+            if (binding == null || pose == null || pipeline.Profile == null || binding.Root == null) return;
             if (m_DisableAnimator && _disabledAnimator == null && m_Calibrator.Animator != null && m_Calibrator.Animator.enabled)
             {
                 _disabledAnimator = m_Calibrator.Animator;
