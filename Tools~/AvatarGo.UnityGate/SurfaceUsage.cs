@@ -164,6 +164,34 @@ public static class SurfaceUsage
                     if (p.GetDocumentationCommentId() is string pid) used.Add(pid);
             for (INamedTypeSymbol t = s as INamedTypeSymbol ?? s.ContainingType; t != null; t = t.ContainingType ?? t.BaseType)
                 if (t.ContainingAssembly != null && surfaceNames.Contains(t.ContainingAssembly.Name)) used.Add(t.GetDocumentationCommentId());
+            // The types in a used member's signature must be declared for it to compile (an event's delegate type, a
+            // property's type, a method's return and parameter types), even when the package never names them.
+            switch (s)
+            {
+                case IMethodSymbol m:
+                    AddType(m.ReturnType);
+                    foreach (IParameterSymbol p in m.Parameters) AddType(p.Type);
+                    break;
+                case IPropertySymbol p:
+                    AddType(p.Type);
+                    break;
+                case IEventSymbol ev:
+                    AddType(ev.Type);
+                    break;
+                case IFieldSymbol f:
+                    AddType(f.Type);
+                    break;
+            }
+        }
+
+        void AddType(ITypeSymbol t)
+        {
+            if (t is IArrayTypeSymbol array) t = array.ElementType;
+            if (t is not INamedTypeSymbol named) return;
+            if (named.ContainingAssembly != null && surfaceNames.Contains(named.ContainingAssembly.Name))
+                for (INamedTypeSymbol n = named.OriginalDefinition; n != null; n = n.ContainingType ?? n.BaseType)
+                    if (n.ContainingAssembly != null && surfaceNames.Contains(n.ContainingAssembly.Name)) used.Add(n.GetDocumentationCommentId());
+            foreach (ITypeSymbol a in named.TypeArguments) AddType(a);
         }
     }
 

@@ -5,5 +5,14 @@ namespace UnityEngine
     // UnityCsReference@2021.3 Runtime/Export/Scripting/Component.bindings.cs
     public class Component : Object
     {
+        public Transform transform => throw null;
+
+        public GameObject gameObject => throw null;
+
+        public T GetComponent<T>() => throw null;
+
+        public T[] GetComponentsInChildren<T>(bool includeInactive) => throw null;
+
+        public T GetComponentInParent<T>() => throw null;
     }
 }
