@@ -124,6 +124,12 @@ namespace AvatarGo
         /// <summary>Exact or fixed offsets; read when the pipeline is made and at each calibration.</summary>
         public OffsetMode Offsets { get => m_Offsets; set => m_Offsets = value; }
 
+        /// <summary>Whether the saved calibration is restored on start (read in <c>Start</c>); samples and tests that must calibrate turn it off.</summary>
+        public bool RestoresSavedProfileOnStart { get => m_RestoreSavedProfile; set => m_RestoreSavedProfile = value; }
+
+        /// <summary>Whether each new calibration is saved to <see cref="ProfilePath"/>.</summary>
+        public bool SavesProfile { get => m_SaveProfile; set => m_SaveProfile = value; }
+
         /// <summary>Diameter of the device markers (m).</summary>
         public float MarkerSize => m_MarkerSize;
 
