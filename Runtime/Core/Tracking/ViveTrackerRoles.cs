@@ -33,6 +33,15 @@ namespace AvatarGo.Core
         /// <summary>The name of the layout's pose control (the action's name in the action map).</summary>
         public const string PoseControl = "devicePose";
 
+        /// <summary>The Input System usage of the waist (pelvis) tracker.</summary>
+        public const string WaistUsage = "Waist";
+
+        /// <summary>The Input System usage of the left foot tracker.</summary>
+        public const string LeftFootUsage = "LeftFoot";
+
+        /// <summary>The Input System usage of the right foot tracker.</summary>
+        public const string RightFootUsage = "RightFoot";
+
         /// <summary>The body roles a tracker can have, in the order the feature declares them.</summary>
         public static readonly DeviceRole[] Roles = { DeviceRole.Pelvis, DeviceRole.LeftFoot, DeviceRole.RightFoot };
 
@@ -71,9 +80,9 @@ namespace AvatarGo.Core
         {
             switch (role)
             {
-                case DeviceRole.Pelvis: return "Waist";
-                case DeviceRole.LeftFoot: return "LeftFoot";
-                case DeviceRole.RightFoot: return "RightFoot";
+                case DeviceRole.Pelvis: return WaistUsage;
+                case DeviceRole.LeftFoot: return LeftFootUsage;
+                case DeviceRole.RightFoot: return RightFootUsage;
                 default: throw new ArgumentOutOfRangeException(nameof(role), role, "Not a tracker role.");
             }
         }

@@ -137,7 +137,44 @@ public class PlantedDefectTests
         Assert.That(result.Succeeded, Is.True, result.Describe());
         List<string> problems = ModuleDependencies.Check(_copy.Root, result);
         Assert.That(problems, Has.Member("package.json: the package uses UnityEngine.AnimationModule (T:UnityEngine.AnimatorCullingMode) but \"dependencies\" lacks \"com.unity.modules.animation\": \"1.0.0\""));
-        _copy.Replace("package.json", "\"license\": \"MIT\",", "\"license\": \"MIT\",\n  \"dependencies\": { \"com.unity.modules.animation\": \"1.0.0\" },");
+        _copy.Replace("package.json", "\"com.unity.modules.xr\": \"1.0.0\"", "\"com.unity.modules.xr\": \"1.0.0\",\n    \"com.unity.modules.animation\": \"1.0.0\"");
         Assert.That(ModuleDependencies.Check(_copy.Root, result), Is.Empty);
+    }
+
+    [Test]
+    public void AnOptionalPackageUsedOutsideItsGatedAssemblyFails()
+    {
+        // The Input System's surface is built (the package is in the project), but only AvatarGo.InputSystem references it.
+        _copy.Write("Runtime/Tracking/PlantedInputAction.cs",
+            "namespace AvatarGo\n{\n    internal static class PlantedInputAction\n    {\n" +
+            "        internal static object Make() => new UnityEngine.InputSystem.InputAction(\"x\");\n    }\n}\n");
+        GateResult result = Gate(new[] { "editor-2021.3" }, "AvatarGo");
+        AssertSingleError(result, "CS0234", "Runtime/Tracking/PlantedInputAction.cs", "'InputSystem' does not exist in the namespace 'UnityEngine'");
+    }
+
+    [Test]
+    public void AnXri2ControllerUsedWithoutItsVersionGuardFailsWithXri3()
+    {
+        // ActionBasedController is obsolete from XRI 3.0.0: the surface declares it so under XRI_3_OR_NEWER, which the gate
+        // defines from the configuration's XRI version (2.0.0 in editor-2021.3, 3.5.1 in editor-6000.5).
+        _copy.Write("Runtime/XRInteractionToolkit/PlantedController.cs",
+            "namespace AvatarGo\n{\n    internal static class PlantedController\n    {\n" +
+            "        internal static object Action(UnityEngine.XR.Interaction.Toolkit.ActionBasedController c) => c.positionAction;\n    }\n}\n");
+        GateResult result = Gate(new[] { "editor-2021.3", "editor-6000.5" }, "AvatarGo.XRInteractionToolkit");
+        GateDiagnostic error = AssertSingleError(result, "CS0618", "Runtime/XRInteractionToolkit/PlantedController.cs", "'ActionBasedController' is obsolete");
+        Assert.That(error.Configuration, Is.EqualTo("editor-6000.5"), "XRI 2.x has it; only XRI 3 deprecates it");
+        Assert.That(result.Errors.Select(e => e.Configuration).Distinct(), Is.EqualTo(new[] { "editor-6000.5" }), result.Describe());
+    }
+
+    [Test]
+    public void OpenVRApiWithoutTheOpenVRXRGuardFailsWithoutThePlugin()
+    {
+        // Without the OpenVR XR plug-in, openvr_api.cs's types live in the SteamVR assembly, which AvatarGo does not use:
+        // the serial lookup must stay under AVATARGO_OPENVR_XR, or the SteamVR-only configuration fails.
+        _copy.Replace("Runtime/SteamVR/SteamVRTrackingSource.cs", "#if AVATARGO_OPENVR_XR\n", "#if true\n");
+        GateResult result = Gate(new[] { "editor-2021.3", "editor-2021.3-partial" }, "AvatarGo.SteamVR");
+        Assert.That(result.Succeeded, Is.False, result.Describe());
+        Assert.That(result.Errors.Select(e => e.Configuration).Distinct(), Is.EqualTo(new[] { "editor-2021.3-partial" }), result.Describe());
+        Assert.That(result.Errors.Any(e => e.File == "Runtime/SteamVR/SteamVRTrackingSource.cs" && e.Message.Contains("ETrackedDeviceProperty")), Is.True, result.Describe());
     }
 }

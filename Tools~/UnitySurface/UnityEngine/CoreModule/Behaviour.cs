@@ -5,5 +5,8 @@ namespace UnityEngine
     // UnityCsReference@2021.3 Runtime/Export/Scripting/Behaviour.bindings.cs
     public class Behaviour : Component
     {
+        public bool enabled { get => throw null; set => throw null; }
+
+        public bool isActiveAndEnabled => throw null;
     }
 }

@@ -18,5 +18,9 @@ namespace UnityEngine
 
         // Safe in every 2021.3 patch; SetLocalPositionAndRotation (2021.3.11f1) and GetPositionAndRotation (2021.3.17f1) are not.
         public void SetPositionAndRotation(Vector3 position, Quaternion rotation) => throw null;
+
+        public int childCount => throw null;
+
+        public Transform GetChild(int index) => throw null;
     }
 }

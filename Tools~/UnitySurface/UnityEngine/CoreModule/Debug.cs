@@ -1,0 +1,13 @@
+// Compile-only Unity API surface (see Tools~/UnitySurface/README.md): only what the package uses, as Unity declares it.
+
+namespace UnityEngine
+{
+    // a non-static class with static members
+    // UnityCsReference@2021.3 Runtime/Export/Debug/Debug.bindings.cs
+    public class Debug
+    {
+        public static void LogError(object message, Object context) => throw null;
+
+        public static void LogWarning(object message, Object context) => throw null;
+    }
+}
