@@ -23,11 +23,14 @@ namespace AvatarGo.Simulation
         private readonly SimulationOptions _options;
 
         /// <summary>Prepares a simulation of <paramref name="clip"/> (lengths in metres) worn by its own skeleton.</summary>
-        /// <exception cref="ArgumentException">The clip's skeleton lacks a required humanoid bone.</exception>
+        /// <exception cref="ArgumentException">The clip has no frames or is too long to simulate, or its skeleton lacks a required humanoid bone.</exception>
         public SessionSimulator(BvhClip clip, SimulationOptions options = null, HumanoidMap map = null)
         {
             _clip = clip ?? throw new ArgumentNullException(nameof(clip));
+            if (clip.FrameCount == 0) throw new ArgumentException("The clip has no frames (Frames: 0): there is no motion to simulate.", nameof(clip));
             _options = options ?? new SimulationOptions();
+            double frames = (_options.TPoseSeconds + _options.WalkInSeconds + _options.BlendSeconds + clip.FrameCount * (double)clip.FrameTime) * _options.Rate;
+            if (!(frames < int.MaxValue)) throw new ArgumentException($"The clip is too long to simulate at {_options.Rate} Hz ({(long)Math.Min(frames, long.MaxValue)} frames).", nameof(clip));
             _map = map ?? HumanoidNaming.Detect(clip.Skeleton);
             _map.RequireComplete(nameof(clip));
         }
@@ -58,7 +61,12 @@ namespace AvatarGo.Simulation
             Skeleton s = _map.Skeleton;
             var rng = new Random(_options.Seed);
             DeviceMountings mountings = _options.Mountings ?? DeviceMountings.Sample(rng);
-            var rig = new VirtualDeviceRig(_map, mountings, _options.Controller);
+            // The wearer's T-pose takes the twists no landmark fixes (about single-child bones) from the clip's first frame:
+            // the way its feet and hands are turned is the wearer's own, and the T-pose and the motion share them whatever
+            // local axes the clip's skeleton uses (a rest-pose twist would differ between rest conventions).
+            var twistReference = new RigidPose[s.JointCount];
+            if (_clip.FrameCount > 0) _clip.GetLocalPoses(0, twistReference); else s.GetRestLocal(twistReference);
+            var rig = new VirtualDeviceRig(_map, mountings, _options.Controller, twistReference);
             DeviceInfo[] devices = Devices();
             var calibrator = new Calibrator(devices, _map);
             var frame = new SessionFrame(writer.Header);
@@ -70,7 +78,7 @@ namespace AvatarGo.Simulation
             var start = new RigidPose(new Vector3((float)rng.NextDouble() * 2 - 1, 0, (float)rng.NextDouble() * 2 - 1),
                 Rotations.AngleAxis((float)rng.NextDouble() * 360f, Vector3.UnitY));
             var tposeStart = new RigidPose[s.JointCount];
-            TPoser.Apply(_map, pose, start);
+            TPoser.Apply(_map, pose, start, twistReference);
             Array.Copy(pose.Local, tposeStart, s.JointCount);
 
             // The clip's local poses, moved so that its first frame stands where the walk-in ends; filled after step 1.
@@ -107,7 +115,7 @@ namespace AvatarGo.Simulation
                         RigidPose placement = calibrator.State == CalibrationState.WalkIn ? calibrator.Profile.Placement : start;
                         target = placement * new RigidPose(_options.Misalignment, Rotations.AngleAxis(_options.MisalignmentYawDegrees, Vector3.UnitY));
                         target = new RigidPose(new Vector3(target.Position.X, 0f, target.Position.Z), target.Rotation);
-                        TPoser.Apply(_map, pose, target);
+                        TPoser.Apply(_map, pose, target, twistReference);
                         tposeTarget = (RigidPose[])pose.Local.Clone();
                         AlignClip(clipLocal, target);
                     }

@@ -18,34 +18,60 @@ namespace AvatarGo.Simulation
         public const float DefaultHandleRadius = 0.02f;
 
         /// <summary>
-        /// Builds the rig for the wearer's skeleton: the mountings (given in the T-pose body frame) are converted
-        /// once into each joint's own frame using the wearer's canonical T-pose. Controllers are held in the palm: the
-        /// grip of <paramref name="controller"/> (or of a handle of <see cref="DefaultHandleRadius"/>) on the palm that the
-        /// finger bones give (<see cref="HandModel"/>), or, for a hand without finger bones, on a palm estimated from the
-        /// forearm (its length 0.36 of the forearm's, the palm facing down in the T-pose).
+        /// Builds the rig for the wearer's skeleton: each mounting is given in a frame of landmarks of the wearer's canonical
+        /// T-pose (<see cref="DeviceMountings"/>) and converted once into its joint's own frame, so no bone's local axes
+        /// matter. Controllers are held in the palm: the grip of <paramref name="controller"/> (or of a handle of
+        /// <see cref="DefaultHandleRadius"/>) on the palm that the finger bones give (<see cref="HandModel"/>), or, for a hand
+        /// without finger bones, on a palm estimated from the arm (see <see cref="PalmWithoutFingers"/>).
         /// </summary>
-        public VirtualDeviceRig(HumanoidMap wearer, DeviceMountings mountings, ControllerProfile controller = null)
+        /// <param name="wearer">The wearer's skeleton.</param>
+        /// <param name="mountings">Where each device sits.</param>
+        /// <param name="controller">The controller held in both hands, or null for a generic handle.</param>
+        /// <param name="twistReference">The local poses the wearer's T-pose takes its bone twists from (see
+        /// <see cref="TPoser.Apply(HumanoidMap, SkeletonPose, RigidPose, RigidPose[])"/>), or null for the rest pose: pass the
+        /// same as for the T-pose the wearer stands in.</param>
+        public VirtualDeviceRig(HumanoidMap wearer, DeviceMountings mountings, ControllerProfile controller = null, RigidPose[] twistReference = null)
         {
             Wearer = wearer ?? throw new ArgumentNullException(nameof(wearer));
             Mountings = mountings ?? throw new ArgumentNullException(nameof(mountings));
             var tpose = new SkeletonPose(wearer.Skeleton);
-            TPoser.Apply(wearer, tpose, RigidPose.Identity);
+            TPoser.Apply(wearer, tpose, RigidPose.Identity, twistReference);
             for (int i = 0; i < BodyRoles.All.Length; i++)
             {
                 DeviceRole role = BodyRoles.All[i];
-                HumanoidBone bone = BodyRoles.JointOf(role);
-                _joints[i] = wearer[bone];
+                _joints[i] = wearer[BodyRoles.JointOf(role)];
                 RigidPose joint = tpose.World[_joints[i]];
-                RigidPose mount = mountings[role];
-                if (role == DeviceRole.LeftHand || role == DeviceRole.RightHand)
+                RigidPose device = role == DeviceRole.LeftHand || role == DeviceRole.RightHand
+                    ? joint * GripInHand(wearer, tpose, role == DeviceRole.LeftHand ? BodySide.Left : BodySide.Right, controller)
+                    : LandmarkFrame(wearer, tpose, role);
+                _deviceInJoint[i] = (device * mountings[role]).RelativeTo(joint);
+            }
+        }
+
+        // The frame a mounting is given in, from landmarks of the T-pose (facing +Z): the HMD's at the centre eye, looking
+        // the way the body faces; the pelvis tracker's at the hips joint, x along the hip line, y up; a foot tracker's at the
+        // ankle, z toward the toes (level), y up (for a foot without a toe landmark, the body's forward).
+        private static RigidPose LandmarkFrame(HumanoidMap wearer, SkeletonPose tpose, DeviceRole role)
+        {
+            RigidPose[] w = tpose.World;
+            switch (role)
+            {
+                case DeviceRole.Head:
+                    return new RigidPose(TPoser.EyePosition(wearer, tpose, Quaternion.Identity), Quaternion.Identity);
+                case DeviceRole.Pelvis:
                 {
-                    BodySide side = role == DeviceRole.LeftHand ? BodySide.Left : BodySide.Right;
-                    _deviceInJoint[i] = GripInHand(wearer, tpose, side, controller) * mount;
-                    continue;
+                    Vector3 hipLine = w[wearer[HumanoidBone.RightUpperLeg]].Position - w[wearer[HumanoidBone.LeftUpperLeg]].Position;
+                    Vector3 forward = Vectors.NormalizeOr(Vector3.Cross(hipLine, Vector3.UnitY), Vector3.UnitZ);
+                    return new RigidPose(w[wearer[HumanoidBone.Hips]].Position, Rotations.LookRotation(forward, Vector3.UnitY));
                 }
-                Vector3 reference = role == DeviceRole.Head ? TPoser.EyePosition(wearer, tpose, Quaternion.Identity) : joint.Position;
-                var device = new RigidPose(reference + mount.Position, mount.Rotation);
-                _deviceInJoint[i] = device.RelativeTo(joint);
+                default:
+                {
+                    BodySide side = role == DeviceRole.LeftFoot ? BodySide.Left : BodySide.Right;
+                    Vector3 ankle = w[wearer[HumanoidBones.OnSide(HumanoidBone.LeftFoot, side)]].Position;
+                    int toe = TPoser.ToeLandmark(wearer, side);
+                    Vector3 toward = toe >= 0 ? Vectors.ProjectOnPlane(w[toe].Position - ankle, Vector3.UnitY) : Vector3.UnitZ;
+                    return new RigidPose(ankle, Rotations.LookRotation(Vectors.NormalizeOr(toward, Vector3.UnitZ), Vector3.UnitY));
+                }
             }
         }
 
@@ -55,19 +81,35 @@ namespace AvatarGo.Simulation
             float radius = controller != null ? -controller.Shape.Distance(Vector3.Zero) : DefaultHandleRadius;
             if (HandModel.CanModel(wearer, side, out _))
             {
-                var hand = new HandModel(wearer, side);
+                var hand = new HandModel(wearer, side, tpose);
                 return HandModel.GripPose(hand.PalmCentreInHand, hand.PalmNormalInHand, hand.AcrossInHand, radius);
             }
-            // No finger bones: the palm from the forearm, facing down in the T-pose, the thumb forward.
             RigidPose wrist = tpose.World[wearer[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]];
-            Vector3 elbow = tpose.World[wearer[HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side)]].Position;
-            Vector3 along = Vectors.NormalizeOr(wrist.Position - elbow, side == BodySide.Left ? -Vector3.UnitX : Vector3.UnitX);
-            Vector3 normal = Vectors.NormalizeOr(Vectors.ProjectOnPlane(-Vector3.UnitY, along), -Vector3.UnitY);
-            Vector3 across = side == BodySide.Left ? Vector3.Cross(along, normal) : Vector3.Cross(normal, along);
-            float handLength = 0.36f * Vector3.Distance(wrist.Position, elbow);
-            float fingerRadius = 0.0085f * handLength / 0.095f;
-            Vector3 palmCentre = wrist.Position + along * (HandModel.GripAlongPalm * handLength) + normal * fingerRadius;
+            PalmWithoutFingers(wearer, tpose, side, out Vector3 palmCentre, out Vector3 normal, out Vector3 across);
             return wrist.Inverse() * HandModel.GripPose(palmCentre, normal, across, radius);
+        }
+
+        /// <summary>
+        /// The palm of a hand without finger bones, in the T-pose <paramref name="tpose"/> (world): the hand points along the
+        /// wrist's child (an End Site), or along the forearm when it has none; the palm faces down and the thumb forward,
+        /// as the T-pose holds them; the hand is 0.36 of the forearm long (wrist to middle knuckle, typical proportions), and
+        /// the palm centre is <see cref="HandModel.GripAlongPalm"/> of the way along it, one finger radius out of the palm.
+        /// </summary>
+        public static void PalmWithoutFingers(HumanoidMap wearer, SkeletonPose tpose, BodySide side, out Vector3 palmCentre, out Vector3 normal, out Vector3 across)
+        {
+            if (wearer == null) throw new ArgumentNullException(nameof(wearer));
+            if (tpose == null) throw new ArgumentNullException(nameof(tpose));
+            RigidPose[] w = tpose.World;
+            Vector3 wrist = w[wearer[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]].Position;
+            Vector3 elbow = w[wearer[HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side)]].Position;
+            int landmark = TPoser.HandLandmark(wearer, side);
+            Vector3 outward = side == BodySide.Left ? -Vector3.UnitX : Vector3.UnitX;
+            Vector3 along = Vectors.NormalizeOr(landmark >= 0 ? w[landmark].Position - wrist : wrist - elbow, outward);
+            normal = Vectors.NormalizeOr(Vectors.ProjectOnPlane(-Vector3.UnitY, along), -Vector3.UnitY);
+            across = side == BodySide.Left ? Vector3.Cross(along, normal) : Vector3.Cross(normal, along);
+            float handLength = 0.36f * Vector3.Distance(wrist, elbow);
+            float fingerRadius = 0.0085f * handLength / 0.095f;
+            palmCentre = wrist + along * (HandModel.GripAlongPalm * handLength) + normal * fingerRadius;
         }
 
         /// <summary>The wearer's skeleton and humanoid map.</summary>

@@ -25,7 +25,7 @@ internal static class ControllerProfiles
 
     /// <summary>Every profile, by file name.</summary>
     public static IReadOnlyList<ControllerProfile> All() =>
-        Directory.GetFiles(Folder(), "*.json").OrderBy(f => f, StringComparer.Ordinal).Select(f => ControllerProfile.Parse(File.ReadAllText(f))).ToList();
+        Directory.GetFiles(Folder(), "*.json").OrderBy(f => f, StringComparer.Ordinal).Select(f => ControllerProfile.Load(f)).ToList();
 
     /// <summary>The profile named <paramref name="name"/> (file name without .json), or null for "none".</summary>
     /// <exception cref="UsageException">No such profile.</exception>
@@ -35,6 +35,6 @@ internal static class ControllerProfiles
         string path = Path.Combine(Folder(), name + ".json");
         if (!File.Exists(path))
             throw new UsageException($"no controller profile '{name}' (have: {string.Join(", ", All().Select(p => p.Name))}, or none)");
-        return ControllerProfile.Parse(File.ReadAllText(path));
+        return ControllerProfile.Load(path);
     }
 }

@@ -53,6 +53,14 @@ public static class Program
             stderr.WriteLine($"avatargo {command.Name}: {e.Message}");
             return 1;
         }
+        catch (ArgumentException e) when (e is not ArgumentNullException)
+        {
+            // The library refusing what an input file holds (a skeleton without the humanoid bones a command needs, a
+            // hand without fingers): one line, not a stack trace. A null argument is a bug and keeps its trace.
+            int parameter = e.Message.IndexOf(" (Parameter '", StringComparison.Ordinal);
+            stderr.WriteLine($"avatargo {command.Name}: {(parameter >= 0 ? e.Message.Substring(0, parameter) : e.Message).Split('\n')[0].TrimEnd('\r')}");
+            return 1;
+        }
     }
 
     private static void PrintUsage(IEnumerable<ICommand> commands, TextWriter stdout)

@@ -83,9 +83,12 @@ namespace AvatarGo.Core
         /// point, and the offsets recomputed from them, so the avatar still stands on the floor where it stood and
         /// every device keeps its own measured pose. Rotation offsets do not change.
         /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">The scale is outside
+        /// <see cref="CalibrationProfileStore.MinAvatarScale"/>…<see cref="CalibrationProfileStore.MaxAvatarScale"/>.</exception>
         public CalibrationProfile WithAvatarScale(float scale)
         {
-            if (!(scale > 0f) || float.IsInfinity(scale)) throw new ArgumentOutOfRangeException(nameof(scale), scale, "The scale must be positive.");
+            if (!(scale >= CalibrationProfileStore.MinAvatarScale && scale <= CalibrationProfileStore.MaxAvatarScale))
+                throw new ArgumentOutOfRangeException(nameof(scale), scale, $"The scale must be from {CalibrationProfileStore.MinAvatarScale} to {CalibrationProfileStore.MaxAvatarScale}.");
             var p = new CalibrationProfile(this) { AvatarScale = scale };
             float ratio = scale / AvatarScale;
             Vector3 origin = Placement.Position;

@@ -1,20 +1,48 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Globalization;
 using System.Numerics;
-using System.Text;
 
 namespace AvatarGo.Core
 {
     /// <summary>
-    /// Saves and loads <see cref="CalibrationProfile"/>s as versioned JSON. Saving is atomic: the text goes to a
-    /// temporary file beside the target, is flushed to disk, then replaces the target in one rename, so a crash
-    /// mid-save leaves either the old profile or the new one, never a torn file.
+    /// Saves and loads <see cref="CalibrationProfile"/>s as versioned JSON. Saving is atomic
+    /// (<see cref="AtomicFileWriter"/>): the text goes to a temporary file beside the target, is flushed to disk, then
+    /// replaces the target in one rename, so a crash mid-save leaves either the old profile or the new one, never a torn
+    /// file, and concurrent saves of one profile never fail on each other.
     /// </summary>
+    /// <remarks>
+    /// Loading checks every number where it is read, so that a profile that loads can be restored, solved and saved
+    /// again: the avatar scale within <see cref="MinAvatarScale"/>…<see cref="MaxAvatarScale"/>, eye heights from 0
+    /// (unknown) to <see cref="MaxHeight"/>, every position (floor height included) within ±<see cref="MaxPosition"/>,
+    /// unit quaternions, device ids that fit an int; and the text at most <see cref="MaxFileLength"/> characters.
+    /// </remarks>
     public static class CalibrationProfileStore
     {
         /// <summary>The <c>format</c> member every profile file carries.</summary>
         public const string FormatName = "avatargo-calibration-profile";
+
+        /// <summary>
+        /// The longest profile text read, in characters (64 Ki; a saved profile is about 3 KB). JSON builds a node per
+        /// value, so this also bounds the parse: the largest accepted text parses in milliseconds.
+        /// </summary>
+        public const int MaxFileLength = 64 << 10;
+
+        /// <summary>The smallest avatar scale a profile may hold (an avatar modelled in millimetres is 0.001).</summary>
+        public const float MinAvatarScale = 1e-3f;
+
+        /// <summary>The largest avatar scale a profile may hold.</summary>
+        public const float MaxAvatarScale = 1e3f;
+
+        /// <summary>The largest eye height (wearer's or unscaled avatar's) a profile may hold, in metres or the avatar's units.</summary>
+        public const float MaxHeight = 1e4f;
+
+        /// <summary>
+        /// The largest coordinate of a position (and the floor height) a profile may hold, in metres: 10 km, where a
+        /// float's resolution is still about a millimetre. Tracking spaces are tens of metres.
+        /// </summary>
+        public const float MaxPosition = 1e4f;
 
         /// <summary>The profile as JSON text.</summary>
         public static string ToJson(CalibrationProfile profile)
@@ -48,75 +76,76 @@ namespace AvatarGo.Core
         }
 
         /// <summary>Reads a profile from JSON text.</summary>
-        /// <exception cref="FormatException">Not a profile, an unknown version, or a missing or malformed member.</exception>
-        public static CalibrationProfile FromJson(string json)
+        /// <exception cref="FormatException">Not a profile, an unknown version, or a missing, malformed or out-of-range member.</exception>
+        public static CalibrationProfile FromJson(string json) => FromJson(json, null);
+
+        /// <summary>
+        /// Reads a profile from JSON text read from <paramref name="sourceName"/> (a file name): every error reads
+        /// <c>SOURCE:LINE: problem</c>.
+        /// </summary>
+        /// <exception cref="FormatException">Not a profile, an unknown version, or a missing, malformed or out-of-range member.</exception>
+        public static CalibrationProfile FromJson(string json, string sourceName)
         {
-            JsonNode root = JsonNode.Parse(json);
-            if (root.Kind != JsonKind.Object || root["format"]?.String != FormatName) throw new FormatException($"Not an AvatarGo calibration profile (no \"format\": \"{FormatName}\").");
+            if (json == null) throw new ArgumentNullException(nameof(json));
+            if (json.Length > MaxFileLength)
+                throw new FormatException($"{(sourceName == null ? "" : sourceName + ":1: ")}{json.Length} characters is more than a calibration profile holds (at most {MaxFileLength})");
+            JsonNode root = JsonNode.Parse(json, sourceName);
+            if (root.Kind != JsonKind.Object || root["format"]?.String != FormatName) throw root.Error($"Not an AvatarGo calibration profile (no \"format\": \"{FormatName}\").");
             double version = root.GetNumber("version");
-            if (version != CalibrationProfile.Version) throw new FormatException($"Calibration profile version {version} is not supported (this package reads version {CalibrationProfile.Version}).");
+            if (version != CalibrationProfile.Version) throw root["version"].Error($"Calibration profile version {version.ToString(CultureInfo.InvariantCulture)} is not supported (this package reads version {CalibrationProfile.Version}).");
             var p = new CalibrationProfile
             {
-                AvatarScale = Positive(root.GetNumber("avatarScale"), "avatarScale"),
-                WearerEyeHeight = (float)root.GetNumber("wearerEyeHeight"),
-                AvatarEyeHeight = (float)root.GetNumber("avatarEyeHeight"),
-                FloorHeight = (float)root.GetNumber("floorHeight"),
-                Placement = ReadPose(root["placement"], "placement"),
-                RootToHead = ReadVector(root, "rootToHead"),
+                AvatarScale = Number(root, "avatarScale", MinAvatarScale, MaxAvatarScale),
+                WearerEyeHeight = Number(root, "wearerEyeHeight", 0f, MaxHeight),
+                AvatarEyeHeight = Number(root, "avatarEyeHeight", 0f, MaxHeight),
+                FloorHeight = Number(root, "floorHeight", -MaxPosition, MaxPosition),
+                Placement = ReadPose(root, "placement"),
+                RootToHead = ReadPosition(root, "rootToHead"),
             };
             string mode = root.GetString("mode");
-            if (mode != "exact" && mode != "fixed") throw new FormatException($"'mode' must be exact or fixed, not '{mode}'.");
+            if (mode != "exact" && mode != "fixed") throw root["mode"].Error($"'mode' must be exact or fixed, not '{JsonNode.Printable(mode)}'.");
             JsonNode roles = root["roles"];
-            if (roles == null || roles.Kind != JsonKind.Object) throw new FormatException("'roles' must be an object.");
+            if (roles == null || roles.Kind != JsonKind.Object) throw (roles ?? root).Error("'roles' must be an object.");
             foreach (DeviceRole role in BodyRoles.All)
             {
-                JsonNode r = roles[RoleKey(role)] ?? throw new FormatException($"'roles' has no '{RoleKey(role)}'.");
+                string key = RoleKey(role);
+                JsonNode r = roles[key] ?? throw roles.Error($"'roles' has no '{key}'.");
+                if (r.Kind != JsonKind.Object) throw r.Error($"'{key}' must be an object.");
                 double id = r.GetNumber("deviceId");
-                if (id < 0 || id != Math.Floor(id)) throw new FormatException($"{RoleKey(role)}.deviceId must be a non-negative integer.");
+                if (!(id >= 0 && id <= int.MaxValue) || id != Math.Floor(id)) throw r["deviceId"].Error($"{key}.deviceId must be an integer from 0 to {int.MaxValue}.");
                 p.SetDevice(role, new DeviceInfo((int)id, DeviceClass.Tracker, r.GetString("serial")));
-                p.SetOffsets(role, ReadPose(r["deviceAtCalibration"], RoleKey(role) + ".deviceAtCalibration"), ReadPose(r["jointAtCalibration"], RoleKey(role) + ".jointAtCalibration"));
+                p.SetOffsets(role, ReadPose(r, "deviceAtCalibration", key + "."), ReadPose(r, "jointAtCalibration", key + "."));
             }
             return mode == "fixed" ? p.WithFixedOffsets() : p;
         }
 
-        /// <summary>Saves atomically (see the class remarks), creating the folder if needed.</summary>
+        /// <summary>
+        /// Saves atomically (see the class remarks and <see cref="AtomicFileWriter"/>), creating the folder if needed. A
+        /// save that fails leaves the previous file as it was and no temporary file behind.
+        /// </summary>
+        /// <exception cref="ArgumentException">The profile holds a value <see cref="Load"/> would refuse (it is not written).</exception>
+        /// <exception cref="IOException">The file cannot be written.</exception>
         public static void Save(CalibrationProfile profile, string path)
         {
             if (path == null) throw new ArgumentNullException(nameof(path));
-            string full = Path.GetFullPath(path);
-            string dir = Path.GetDirectoryName(full);
-            Directory.CreateDirectory(dir);
-            string temp = Path.Combine(dir, "." + Path.GetFileName(full) + "." + Guid.NewGuid().ToString("N") + ".tmp");
-            try
-            {
-                byte[] bytes = new UTF8Encoding(false).GetBytes(ToJson(profile));
-                using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None))
-                {
-                    stream.Write(bytes, 0, bytes.Length);
-                    stream.Flush(true);
-                }
-                if (File.Exists(full)) File.Replace(temp, full, null);
-                else File.Move(temp, full);
-            }
-            finally
-            {
-                if (File.Exists(temp)) File.Delete(temp);
-            }
+            string json = ToJson(profile);
+            // Before anything is touched: a profile that would not load back (a scale out of range) is refused here.
+            try { FromJson(json); }
+            catch (FormatException e) { throw new ArgumentException("The profile cannot be saved: it would not load back: " + e.Message, nameof(profile), e); }
+            Directory.CreateDirectory(Path.GetDirectoryName(Path.GetFullPath(path)));
+            AtomicFileWriter.WriteAllText(path, json);
         }
 
         /// <summary>Loads a profile saved by <see cref="Save"/>.</summary>
-        /// <exception cref="FormatException">The file is not a valid profile; the message names the problem.</exception>
+        /// <exception cref="FormatException">The file is not a valid profile; the message (<c>FILE:LINE: problem</c>) names the problem.</exception>
         public static CalibrationProfile Load(string path)
         {
-            string text = File.ReadAllText(path);
-            try
-            {
-                return FromJson(text);
-            }
-            catch (FormatException e)
-            {
-                throw new FormatException($"{Path.GetFileName(path)}: {e.Message}", e);
-            }
+            if (path == null) throw new ArgumentNullException(nameof(path));
+            string name = Path.GetFileName(path);
+            // Refuse a huge file before reading it into memory.
+            long length = new FileInfo(path).Length;
+            if (length > MaxFileLength * 4L) throw new FormatException($"{name}:1: {length} bytes is more than a calibration profile holds (at most {MaxFileLength} characters)");
+            return FromJson(File.ReadAllText(path), name);
         }
 
         private static string RoleKey(DeviceRole role)
@@ -140,22 +169,31 @@ namespace AvatarGo.Core
             w.EndObject();
         }
 
-        private static RigidPose ReadPose(JsonNode node, string what)
+        private static RigidPose ReadPose(JsonNode parent, string name, string prefix = "")
         {
-            if (node == null || node.Kind != JsonKind.Object) throw new FormatException($"'{what}' must be an object with position and rotation.");
-            Vector3 position = ReadVector(node, "position");
+            JsonNode node = parent[name];
+            if (node == null || node.Kind != JsonKind.Object) throw (node ?? parent).Error($"'{prefix}{name}' must be an object with position and rotation.");
+            Vector3 position = ReadPosition(node, "position", prefix + name + ".");
             double[] q = node.GetNumbers("rotation", 4);
             var rotation = new Quaternion((float)q[0], (float)q[1], (float)q[2], (float)q[3]);
-            var pose = new RigidPose(position, rotation);
-            if (!pose.IsValid) throw new FormatException($"'{what}' is not a valid pose (finite position, unit quaternion).");
+            if (!Rotations.IsUnit(rotation)) throw node["rotation"].Error($"'{prefix}{name}.rotation' is not a unit quaternion (length within 1e-3 of 1).");
             return new RigidPose(position, Quaternion.Normalize(rotation));
         }
 
-        private static Vector3 ReadVector(JsonNode node, string name) => node.GetVector3(name);
-
-        private static float Positive(double v, string name)
+        private static Vector3 ReadPosition(JsonNode node, string name, string prefix = "")
         {
-            if (!(v > 0) || double.IsInfinity(v)) throw new FormatException($"'{name}' must be positive.");
+            double[] v = node.GetNumbers(name, 3);
+            foreach (double x in v)
+                if (!(Math.Abs((float)x) <= MaxPosition)) throw node[name].Error($"'{prefix}{name}' has a coordinate of {x.ToString("R", CultureInfo.InvariantCulture)}; positions are within ±{MaxPosition.ToString(CultureInfo.InvariantCulture)} m.");
+            return new Vector3((float)v[0], (float)v[1], (float)v[2]);
+        }
+
+        private static float Number(JsonNode node, string name, float min, float max)
+        {
+            double v = node.GetNumber(name);
+            float f = (float)v; // compared as stored, so that every float in range round-trips
+            if (!(f >= min && f <= max))
+                throw node[name].Error($"'{name}' is {v.ToString("R", CultureInfo.InvariantCulture)}; it must be from {min.ToString(CultureInfo.InvariantCulture)} to {max.ToString(CultureInfo.InvariantCulture)}.");
             return (float)v;
         }
     }

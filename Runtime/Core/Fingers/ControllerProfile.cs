@@ -1,5 +1,7 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
 using System.Numerics;
 
 namespace AvatarGo.Core
@@ -7,13 +9,28 @@ namespace AvatarGo.Core
     /// <summary>
     /// A controller's grip as data: its shape as signed-distance primitives and the points the hand cares about,
     /// in the controller's frame (x right, y up along the handle, z forward toward the trigger; origin on the
-    /// handle axis where the palm centre holds it). Parsed from JSON (<see cref="Parse"/>): adding a controller
+    /// handle axis where the palm centre holds it). Parsed from JSON (<see cref="Parse(string, string)"/>): adding a controller
     /// needs a file, not code. See Documentation~/fingers.md for the bundled profiles and their measurements.
     /// </summary>
+    /// <remarks>
+    /// Parsing checks every number where it is read, so that a profile that parses gives a finite surface everywhere:
+    /// points (shape ends and centres, trigger, thumb rest) within ±<see cref="MaxCoordinate"/> of the origin, radii and
+    /// half extents from 0 to <see cref="MaxCoordinate"/>, Euler angles within ±360°, 1 to <see cref="MaxShapes"/> shapes,
+    /// and the text at most <see cref="MaxFileLength"/> characters.
+    /// </remarks>
     public sealed class ControllerProfile
     {
         /// <summary>The <c>format</c> member every profile file carries.</summary>
         public const string FormatName = "avatargo-controller-profile";
+
+        /// <summary>The longest profile text read, in characters (64 KiB; the bundled profiles are under 1 KB).</summary>
+        public const int MaxFileLength = 64 << 10;
+
+        /// <summary>The most shapes a profile may have (the bundled ones have two to four; each costs time in every finger solve).</summary>
+        public const int MaxShapes = 64;
+
+        /// <summary>The largest coordinate, radius or half extent, in metres: a controller is a hand-sized object.</summary>
+        public const float MaxCoordinate = 1f;
 
         private ControllerProfile(string name, string displayName, SdfComposite shape, Vector3 trigger, Vector3 thumbRest)
         {
@@ -40,43 +57,81 @@ namespace AvatarGo.Core
         public Vector3 ThumbRest { get; }
 
         /// <summary>Parses a profile from JSON.</summary>
-        /// <exception cref="FormatException">Not a controller profile, or a member is missing or malformed.</exception>
-        public static ControllerProfile Parse(string json)
+        /// <exception cref="FormatException">Not a controller profile, or a member is missing, malformed or out of range.</exception>
+        public static ControllerProfile Parse(string json) => Parse(json, null);
+
+        /// <summary>
+        /// Parses a profile from JSON text read from <paramref name="sourceName"/> (a file name): every error reads
+        /// <c>SOURCE:LINE: problem</c>.
+        /// </summary>
+        /// <exception cref="FormatException">Not a controller profile, or a member is missing, malformed or out of range.</exception>
+        public static ControllerProfile Parse(string json, string sourceName)
         {
-            JsonNode root = JsonNode.Parse(json);
-            if (root.Kind != JsonKind.Object || root["format"]?.String != FormatName) throw new FormatException($"Not a controller profile (no \"format\": \"{FormatName}\").");
-            if (root.GetNumber("version") != 1) throw new FormatException($"Controller profile version {root.GetNumber("version")} is not supported.");
+            if (json == null) throw new ArgumentNullException(nameof(json));
+            if (json.Length > MaxFileLength)
+                throw new FormatException($"{(sourceName == null ? "" : sourceName + ":1: ")}{json.Length} characters is more than a controller profile holds (at most {MaxFileLength})");
+            JsonNode root = JsonNode.Parse(json, sourceName);
+            if (root.Kind != JsonKind.Object || root["format"]?.String != FormatName) throw root.Error($"Not a controller profile (no \"format\": \"{FormatName}\").");
+            double version = root.GetNumber("version");
+            if (version != 1) throw root["version"].Error($"Controller profile version {version.ToString(CultureInfo.InvariantCulture)} is not supported (this package reads version 1).");
             JsonNode shapes = root["shapes"];
-            if (shapes == null || shapes.Kind != JsonKind.Array || shapes.Items.Count == 0) throw new FormatException("'shapes' must be a non-empty array.");
+            if (shapes == null || shapes.Kind != JsonKind.Array || shapes.Items.Count == 0) throw (shapes ?? root).Error("'shapes' must be a non-empty array.");
+            if (shapes.Items.Count > MaxShapes) throw shapes.Error($"{shapes.Items.Count} shapes; a profile has at most {MaxShapes}.");
             var list = new List<SdfShape>();
             foreach (JsonNode s in shapes.Items)
             {
+                if (s.Kind != JsonKind.Object) throw s.Error("each shape must be an object with a 'type'.");
                 string type = s.GetString("type");
                 switch (type)
                 {
-                    case "capsule": list.Add(SdfShape.Capsule(Vec(s, "a"), Vec(s, "b"), Length(s, "radius"))); break;
-                    case "sphere": list.Add(SdfShape.Sphere(Vec(s, "centre"), Length(s, "radius"))); break;
-                    case "box": list.Add(SdfShape.Box(Vec(s, "centre"), Vec(s, "halfExtents"), Rotation(s))); break;
-                    case "roundedBox": list.Add(SdfShape.RoundedBox(Vec(s, "centre"), Vec(s, "halfExtents"), Length(s, "radius"), Rotation(s))); break;
-                    default: throw new FormatException($"Unknown shape type '{type}' (capsule, sphere, box, roundedBox).");
+                    case "capsule": list.Add(SdfShape.Capsule(Point(s, "a"), Point(s, "b"), Length(s, "radius"))); break;
+                    case "sphere": list.Add(SdfShape.Sphere(Point(s, "centre"), Length(s, "radius"))); break;
+                    case "box": list.Add(SdfShape.Box(Point(s, "centre"), HalfExtents(s), Rotation(s))); break;
+                    case "roundedBox": list.Add(SdfShape.RoundedBox(Point(s, "centre"), HalfExtents(s), Length(s, "radius"), Rotation(s))); break;
+                    default: throw s["type"].Error($"Unknown shape type '{JsonNode.Printable(type)}' (capsule, sphere, box, roundedBox).");
                 }
             }
-            return new ControllerProfile(root.GetString("name"), root.GetString("displayName"), new SdfComposite(list), Vec(root, "trigger"), Vec(root, "thumbRest"));
+            return new ControllerProfile(root.GetString("name"), root.GetString("displayName"), new SdfComposite(list), Point(root, "trigger"), Point(root, "thumbRest"));
         }
 
-        private static Vector3 Vec(JsonNode n, string name) => n.GetVector3(name);
+        /// <summary>Reads and parses a profile file; errors read <c>FILE:LINE: problem</c>.</summary>
+        /// <exception cref="FormatException">The file is not a valid controller profile.</exception>
+        /// <exception cref="IOException">The file cannot be read.</exception>
+        public static ControllerProfile Load(string path)
+        {
+            if (path == null) throw new ArgumentNullException(nameof(path));
+            string name = Path.GetFileName(path);
+            long length = new FileInfo(path).Length;
+            if (length > MaxFileLength * 4L) throw new FormatException($"{name}:1: {length} bytes is more than a controller profile holds (at most {MaxFileLength} characters)");
+            return Parse(File.ReadAllText(path), name);
+        }
+
+        private static Vector3 Point(JsonNode n, string name) => Bounded(n, name, -MaxCoordinate, "within ±1 m of the controller's origin");
+
+        private static Vector3 HalfExtents(JsonNode n) => Bounded(n, "halfExtents", 0f, "from 0 to 1 m");
+
+        private static Vector3 Bounded(JsonNode n, string name, float min, string range)
+        {
+            double[] v = n.GetNumbers(name, 3);
+            foreach (double x in v)
+                if (!(x >= min && x <= MaxCoordinate)) throw n[name].Error($"'{name}' has a coordinate of {x.ToString("R", CultureInfo.InvariantCulture)}; it must be {range}.");
+            return new Vector3((float)v[0], (float)v[1], (float)v[2]);
+        }
 
         private static float Length(JsonNode n, string name)
         {
             double v = n.GetNumber(name);
-            if (!(v >= 0) || v > 1) throw new FormatException($"'{name}' must be between 0 and 1 m.");
+            if (!(v >= 0) || v > MaxCoordinate) throw n[name].Error($"'{name}' is {v.ToString("R", CultureInfo.InvariantCulture)}; it must be from 0 to 1 m.");
             return (float)v;
         }
 
         private static Quaternion Rotation(JsonNode n)
         {
             if (n["eulerDegrees"] == null) return Quaternion.Identity;
-            Vector3 e = Vec(n, "eulerDegrees");
+            double[] d = n.GetNumbers("eulerDegrees", 3);
+            foreach (double x in d)
+                if (!(Math.Abs(x) <= 360)) throw n["eulerDegrees"].Error($"'eulerDegrees' has an angle of {x.ToString("R", CultureInfo.InvariantCulture)}; angles are within ±360°.");
+            var e = new Vector3((float)d[0], (float)d[1], (float)d[2]);
             // Unity's order: Z, then X, then Y.
             return Rotations.AngleAxis(e.Y, Vector3.UnitY) * Rotations.AngleAxis(e.X, Vector3.UnitX) * Rotations.AngleAxis(e.Z, Vector3.UnitZ);
         }

@@ -5,12 +5,12 @@ namespace AvatarGo.Core
 {
     /// <summary>
     /// One hand of an avatar for finger IK: per finger (thumb, index, middle, ring, little) its three joints, their
-    /// open rotations (the rig's rest pose) and closed rotations, and a fingertip point. Each joint closes about an
-    /// axis found from the hand's geometry, so any rig works whatever local axis its bones bend about: a finger bends
-    /// about the finger's direction crossed with the palm normal; the thumb's two outer joints bend toward the little
-    /// finger's base (the thumb's own flexion, which curls it across the palm); and the thumb's first joint has two
-    /// parameters, like Unity's humanoid muscles (Thumb 1 Stretched and Thumb Spread): it turns toward the palm normal
-    /// and, separately, lifts the thumb radially (toward the thumb side, over the top of a controller).
+    /// open rotations (the rig's rest pose, or an open pose given, such as the calibration T-pose) and closed rotations,
+    /// and a fingertip point. Each joint closes about an axis found from the hand's geometry, so any rig works whatever
+    /// local axis its bones bend about: a finger bends about the finger's direction crossed with the palm normal; the
+    /// thumb's two outer joints bend toward the little finger's base (the thumb's own flexion, which curls it across the
+    /// palm); and the thumb's first joint has two parameters, like Unity's humanoid muscles (Thumb 1 Stretched and Thumb
+    /// Spread): it turns toward the palm normal and, separately, lifts the thumb radially (toward the thumb side, over the top of a controller).
     /// Every joint has a parameter <c>t</c> in [0, 1] blending its open rotation to its closed one (the paper's
     /// <c>t_f^j</c>), and the thumb has its spread too: <see cref="FingerParameters"/>.
     /// </summary>
@@ -33,7 +33,8 @@ namespace AvatarGo.Core
         public const float GripAlongPalm = 0.8f;
 
         internal readonly int[,] Joints = new int[5, 3];
-        internal readonly RigidPose[,] RestRelative = new RigidPose[5, 3];   // joint 0 relative to the hand, others to their parent joint
+        internal readonly RigidPose[,] RestRelative = new RigidPose[5, 3];   // open pose: joint 0 relative to the hand, others to their parent joint
+        internal readonly RigidPose[,] OpenLocal = new RigidPose[5, 3];      // open pose: each joint's local pose
         internal readonly Vector3[,] AxisLocal = new Vector3[5, 3];
         internal readonly float[,] MaxRadians = new float[5, 3];
         internal readonly Vector3[] TipLocal = new Vector3[5];
@@ -41,9 +42,20 @@ namespace AvatarGo.Core
         internal Vector3 ThumbSpreadAxisLocal;   // in the thumb's first joint's rest frame
         internal float ThumbSpreadRadians;
 
-        /// <summary>Builds the model of one hand of <paramref name="map"/>'s rig from its rest pose.</summary>
+        /// <summary>Builds the model of one hand of <paramref name="map"/>'s rig with its rest pose as the open hand.</summary>
         /// <exception cref="ArgumentException">The hand cannot be modelled (<see cref="CanModel"/> says why).</exception>
-        public HandModel(HumanoidMap map, BodySide side)
+        public HandModel(HumanoidMap map, BodySide side) : this(map, side, null)
+        {
+        }
+
+        /// <summary>
+        /// Builds the model of one hand of <paramref name="map"/>'s rig with the fingers of <paramref name="openPose"/> (a pose
+        /// of the rig's skeleton, its world poses up to date) as the open hand: the pipeline passes the calibration T-pose
+        /// (<see cref="TPoser"/>: fingers side by side, relaxed), so that the grip does not depend on how the rig's rest pose holds its
+        /// fingers (a rest with every bone along one axis has them in a line). Null uses the rest pose.
+        /// </summary>
+        /// <exception cref="ArgumentException">The hand cannot be modelled (<see cref="CanModel"/> says why), or the pose is of another skeleton.</exception>
+        public HandModel(HumanoidMap map, BodySide side, SkeletonPose openPose)
         {
             if (map == null) throw new ArgumentNullException(nameof(map));
             if (!CanModel(map, side, out string reason)) throw new ArgumentException(reason, nameof(map));
@@ -51,11 +63,20 @@ namespace AvatarGo.Core
             Side = side;
             bool left = side == BodySide.Left;
             Skeleton s = map.Skeleton;
+            if (openPose != null && openPose.Skeleton.JointCount != s.JointCount) throw new ArgumentException("The open pose belongs to another skeleton.", nameof(openPose));
             HandJoint = map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)];
             var rest = new RigidPose[s.JointCount];
             var world = new RigidPose[s.JointCount];
-            s.GetRestLocal(rest);
-            s.ComputeWorld(rest, world);
+            if (openPose != null)
+            {
+                Array.Copy(openPose.Local, rest, rest.Length);
+                Array.Copy(openPose.World, world, world.Length);
+            }
+            else
+            {
+                s.GetRestLocal(rest);
+                s.ComputeWorld(rest, world);
+            }
             RigidPose hand = world[HandJoint];
 
             int index = map[HumanoidBones.Finger(side, Finger.Index, Phalanx.Proximal)];
@@ -81,6 +102,7 @@ namespace AvatarGo.Core
                 if (j0 < 0 || j1 < 0 || j2 < 0) continue;
                 HasFinger[f] = true;
                 Joints[f, 0] = j0; Joints[f, 1] = j1; Joints[f, 2] = j2;
+                OpenLocal[f, 0] = rest[j0]; OpenLocal[f, 1] = rest[j1]; OpenLocal[f, 2] = rest[j2];
                 RestRelative[f, 0] = world[j0].RelativeTo(hand);
                 RestRelative[f, 1] = world[j1].RelativeTo(world[j0]);
                 RestRelative[f, 2] = world[j2].RelativeTo(world[j1]);
@@ -206,7 +228,7 @@ namespace AvatarGo.Core
                 for (int k = 0; k < 3; k++)
                 {
                     int j = Joints[f, k];
-                    RigidPose rest = pose.Skeleton.GetRestLocal(j);
+                    RigidPose rest = OpenLocal[f, k];
                     float spread = f == 0 && k == 0 ? v[FingerParameters.ThumbSpreadIndex] : 0f;
                     pose.Local[j] = new RigidPose(rest.Position, Quaternion.Normalize(rest.Rotation * Bend(f, k, v[f * 3 + k], spread)));
                 }

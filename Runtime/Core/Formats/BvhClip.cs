@@ -23,7 +23,7 @@ namespace AvatarGo.Core
         private readonly int[] _channelStart;
         private readonly float[] _values;
 
-        /// <summary>Creates a clip from its parts (used by <see cref="BvhReader"/> and <see cref="FromPoses"/>).</summary>
+        /// <summary>Creates a clip from its parts (used by <see cref="BvhReader"/> and <c>FromPoses</c>).</summary>
         /// <param name="names">Joint names in file order (End Sites included).</param>
         /// <param name="parents">Parent index of each joint (-1 for the root), parents first.</param>
         /// <param name="isEndSite">True for End Site joints.</param>
@@ -150,25 +150,24 @@ namespace AvatarGo.Core
         }
 
         /// <summary>
-        /// The height of the rest skeleton (highest minus lowest joint, End Sites included) in file units,
-        /// and from it the guessed metres per file unit: under 3 units tall → metres (1), under 300 →
-        /// centimetres (0.01), otherwise millimetres (0.001). A standing human is 1–2.2 m tall.
+        /// The length of the skeleton's longest chain of bones from a root (the sum of the OFFSET lengths along it, End
+        /// Sites included), in file units, and from it the guessed metres per file unit: under 3 units → metres (1), under
+        /// 300 → centimetres (0.01), otherwise millimetres (0.001). For a human that chain (hips to a fingertip or the head)
+        /// is 0.7–1.6 m whatever the rest pose: it depends on the bones' lengths only, not on how the rest bends them (a rest
+        /// with every bone along one axis, or crumpled, guesses the same unit as a T-pose).
         /// </summary>
         public float GuessMetresPerUnit()
         {
-            var rest = new RigidPose[Skeleton.JointCount];
-            for (int i = 0; i < rest.Length; i++) rest[i] = new RigidPose(_fileOffsets[i], Quaternion.Identity);
-            var world = new RigidPose[rest.Length];
-            Skeleton.ComputeWorld(rest, world);
-            float min = float.MaxValue, max = float.MinValue;
-            foreach (RigidPose p in world)
+            var chain = new float[Skeleton.JointCount];
+            float longest = 0f;
+            for (int j = 0; j < chain.Length; j++)
             {
-                min = Math.Min(min, p.Position.Y);
-                max = Math.Max(max, p.Position.Y);
+                int parent = Skeleton.GetParent(j);
+                chain[j] = (parent < 0 ? 0f : chain[parent]) + (parent < 0 ? 0f : _fileOffsets[j].Length());
+                longest = Math.Max(longest, chain[j]);
             }
-            float height = max - min;
-            if (height < 3f) return 1f;
-            if (height < 300f) return 0.01f;
+            if (longest < 3f) return 1f;
+            if (longest < 300f) return 0.01f;
             return 0.001f;
         }
 
@@ -180,22 +179,47 @@ namespace AvatarGo.Core
         public static BvhClip FromPoses(Skeleton skeleton, IReadOnlyList<RigidPose[]> localFrames, float frameTime, float metresPerUnit = 1f)
         {
             if (skeleton == null) throw new ArgumentNullException(nameof(skeleton));
+            var channels = new BvhChannel[skeleton.JointCount][];
+            for (int j = 0; j < channels.Length; j++)
+                channels[j] = skeleton.IsEndSite(j) ? Array.Empty<BvhChannel>()
+                    : skeleton.GetParent(j) < 0 ? new[] { BvhChannel.Xposition, BvhChannel.Yposition, BvhChannel.Zposition, BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation }
+                    : new[] { BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation };
+            return FromPoses(skeleton, localFrames, frameTime, metresPerUnit, channels);
+        }
+
+        /// <summary>
+        /// Creates a clip from local poses of <paramref name="skeleton"/> (Unity's frame, metres) with the channels
+        /// given for each joint: End Sites none; every other joint its three rotation channels (one per axis, in the
+        /// order they compose) and, when its translation moves, the three position channels. The OFFSETs are the
+        /// skeleton's rest translations. Lengths are divided by <paramref name="metresPerUnit"/>.
+        /// </summary>
+        /// <exception cref="ArgumentException">A joint's channels are not as described, a frame has the wrong number of
+        /// poses, or a joint without position channels is translated away from its rest offset in some frame.</exception>
+        public static BvhClip FromPoses(Skeleton skeleton, IReadOnlyList<RigidPose[]> localFrames, float frameTime, float metresPerUnit,
+            IReadOnlyList<BvhChannel[]> channels)
+        {
+            if (skeleton == null) throw new ArgumentNullException(nameof(skeleton));
             if (localFrames == null) throw new ArgumentNullException(nameof(localFrames));
+            if (channels == null) throw new ArgumentNullException(nameof(channels));
+            if (!(metresPerUnit > 0f) || float.IsInfinity(metresPerUnit)) throw new ArgumentOutOfRangeException(nameof(metresPerUnit), metresPerUnit, "Must be positive.");
             int n = skeleton.JointCount;
+            if (channels.Count != n) throw new ArgumentException($"Expected channels for {n} joints, got {channels.Count}.", nameof(channels));
             var parents = new int[n];
             var endSites = new bool[n];
             var offsets = new Vector3[n];
-            var channels = new BvhChannel[n][];
+            var copied = new BvhChannel[n][];
+            var positionAt = new int[n];   // index of Xposition among the joint's channels, or -1
+            var rotationAxes = new int[n][];
             int total = 0;
             for (int j = 0; j < n; j++)
             {
                 parents[j] = skeleton.GetParent(j);
                 endSites[j] = skeleton.IsEndSite(j);
                 offsets[j] = ToUnity(skeleton.GetRestLocal(j).Position) / metresPerUnit;
-                channels[j] = endSites[j] ? Array.Empty<BvhChannel>()
-                    : parents[j] < 0 ? new[] { BvhChannel.Xposition, BvhChannel.Yposition, BvhChannel.Zposition, BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation }
-                    : new[] { BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation };
-                total += channels[j].Length;
+                copied[j] = (BvhChannel[])(channels[j] ?? Array.Empty<BvhChannel>()).Clone();
+                positionAt[j] = -1;
+                CheckChannels(skeleton, j, copied[j], out positionAt[j], out rotationAxes[j]);
+                total += copied[j].Length;
             }
             var values = new float[localFrames.Count * total];
             int k = 0;
@@ -206,16 +230,59 @@ namespace AvatarGo.Core
                 for (int j = 0; j < n; j++)
                 {
                     if (endSites[j]) continue;
-                    if (parents[j] < 0)
+                    Vector3 p = ToUnity(frame[j].Position) / metresPerUnit; // the mirror is its own inverse
+                    if (positionAt[j] < 0 && Vector3.Distance(p, offsets[j]) > 1e-5f * Math.Max(1f, offsets[j].Length()))
+                        throw new ArgumentException($"Joint '{skeleton.GetName(j)}' moves away from its OFFSET in frame {f} but has no position channels.", nameof(channels));
+                    int[] axes = rotationAxes[j];
+                    Vector3 euler = EulerDegrees(ToUnity(frame[j].Rotation), axes[0], axes[1], axes[2]);
+                    BvhChannel[] list = copied[j];
+                    int rotation = 0; // rotation channels take the angles in the order they compose
+                    for (int c = 0; c < list.Length; c++)
                     {
-                        Vector3 p = ToUnity(frame[j].Position) / metresPerUnit; // the mirror is its own inverse
-                        values[k++] = p.X; values[k++] = p.Y; values[k++] = p.Z;
+                        switch (list[c])
+                        {
+                            case BvhChannel.Xposition: values[k++] = p.X; break;
+                            case BvhChannel.Yposition: values[k++] = p.Y; break;
+                            case BvhChannel.Zposition: values[k++] = p.Z; break;
+                            default:
+                                values[k++] = rotation == 0 ? euler.X : rotation == 1 ? euler.Y : euler.Z;
+                                rotation++;
+                                break;
+                        }
                     }
-                    Vector3 euler = EulerDegrees(ToUnity(frame[j].Rotation), 2, 0, 1); // ZXY
-                    values[k++] = euler.X; values[k++] = euler.Y; values[k++] = euler.Z;
                 }
             }
-            return new BvhClip(skeleton.Names, parents, endSites, offsets, channels, localFrames.Count, frameTime, values, metresPerUnit);
+            return new BvhClip(skeleton.Names, parents, endSites, offsets, copied, localFrames.Count, frameTime, values, metresPerUnit);
+        }
+
+        // End Sites have no channels; other joints exactly one rotation channel per axis and no or all three position channels.
+        private static void CheckChannels(Skeleton skeleton, int joint, BvhChannel[] list, out int positionAt, out int[] rotationAxes)
+        {
+            positionAt = -1;
+            rotationAxes = null;
+            string name = skeleton.GetName(joint);
+            if (skeleton.IsEndSite(joint))
+            {
+                if (list.Length != 0) throw new ArgumentException($"End Site '{name}' cannot have channels.", "channels");
+                return;
+            }
+            var axes = new List<int>(3);
+            int positions = 0, seen = 0;
+            for (int c = 0; c < list.Length; c++)
+            {
+                int bit = 1 << (int)list[c];
+                if ((seen & bit) != 0) throw new ArgumentException($"Joint '{name}' lists {list[c]} twice.", "channels");
+                seen |= bit;
+                if (list[c] <= BvhChannel.Zposition)
+                {
+                    if (positions == 0) positionAt = c;
+                    positions++;
+                }
+                else axes.Add(list[c] - BvhChannel.Xrotation);
+            }
+            if (axes.Count != 3 || (positions != 0 && positions != 3))
+                throw new ArgumentException($"Joint '{name}' needs three rotation channels and none or three position channels.", "channels");
+            rotationAxes = axes.ToArray();
         }
 
         /// <summary>

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using System.Text;
@@ -11,11 +12,14 @@ namespace AvatarGo.Core
     /// </summary>
     public static class BvhWriter
     {
-        /// <summary>Writes the clip to a file (replacing it).</summary>
+        /// <summary>
+        /// Writes the clip to a file, whole or not at all (<see cref="AtomicFileWriter"/>): if writing fails, a file
+        /// already at <paramref name="path"/> is left as it was.
+        /// </summary>
         public static void WriteFile(string path, BvhClip clip)
         {
-            using (var writer = new StreamWriter(path, false, new UTF8Encoding(false)))
-                Write(writer, clip);
+            if (clip == null) throw new ArgumentNullException(nameof(clip));
+            AtomicFileWriter.WriteText(path, writer => Write(writer, clip));
         }
 
         /// <summary>Writes the clip as BVH text.</summary>
@@ -24,10 +28,8 @@ namespace AvatarGo.Core
             if (writer == null) throw new ArgumentNullException(nameof(writer));
             if (clip == null) throw new ArgumentNullException(nameof(clip));
             writer.NewLine = "\n";
-            Skeleton s = clip.Skeleton;
             writer.WriteLine("HIERARCHY");
-            for (int root = 0; root < s.JointCount; root++)
-                if (s.GetParent(root) < 0) WriteJoint(writer, clip, root, 0);
+            WriteHierarchy(writer, clip);
             writer.WriteLine("MOTION");
             writer.WriteLine("Frames:\t" + clip.FrameCount.ToString(CultureInfo.InvariantCulture));
             writer.WriteLine("Frame Time:\t" + clip.FrameTime.ToString("R", CultureInfo.InvariantCulture));
@@ -44,10 +46,54 @@ namespace AvatarGo.Core
             }
         }
 
-        private static void WriteJoint(TextWriter w, BvhClip clip, int joint, int depth)
+        // Depth-first, children in index order, with an explicit stack (a deep chain must not overflow the thread's
+        // stack) and children listed once up front (linear, not a scan of every joint per joint). Indentation stops
+        // growing at MaxIndent tabs, so that a chain thousands of joints deep is not quadratic in tabs.
+        private const int MaxIndent = 32;
+
+        private static void WriteHierarchy(TextWriter w, BvhClip clip)
         {
             Skeleton s = clip.Skeleton;
-            string indent = new string('\t', depth);
+            int n = s.JointCount;
+            var childStart = new int[n + 1];
+            for (int j = 0; j < n; j++)
+                if (s.GetParent(j) >= 0) childStart[s.GetParent(j) + 1]++;
+            for (int j = 0; j < n; j++) childStart[j + 1] += childStart[j];
+            var children = new int[Math.Max(0, childStart[n])];
+            var fill = (int[])childStart.Clone();
+            for (int j = 0; j < n; j++)
+                if (s.GetParent(j) >= 0) children[fill[s.GetParent(j)]++] = j;
+
+            // Each stack entry is a joint and how many of its children have been written; a joint is opened when pushed.
+            var stack = new List<(int Joint, int NextChild)>();
+            for (int root = 0; root < n; root++)
+            {
+                if (s.GetParent(root) >= 0) continue;
+                Open(w, clip, root, 0);
+                stack.Add((root, 0));
+                while (stack.Count > 0)
+                {
+                    var (joint, next) = stack[stack.Count - 1];
+                    if (childStart[joint] + next < childStart[joint + 1])
+                    {
+                        stack[stack.Count - 1] = (joint, next + 1);
+                        int child = children[childStart[joint] + next];
+                        Open(w, clip, child, stack.Count);
+                        stack.Add((child, 0));
+                    }
+                    else
+                    {
+                        stack.RemoveAt(stack.Count - 1);
+                        w.WriteLine(Indent(stack.Count) + "}");
+                    }
+                }
+            }
+        }
+
+        private static void Open(TextWriter w, BvhClip clip, int joint, int depth)
+        {
+            Skeleton s = clip.Skeleton;
+            string indent = Indent(depth);
             bool endSite = s.IsEndSite(joint);
             w.WriteLine(indent + (endSite ? "End Site" : (s.GetParent(joint) < 0 ? "ROOT " : "JOINT ") + s.GetName(joint)));
             w.WriteLine(indent + "{");
@@ -60,10 +106,18 @@ namespace AvatarGo.Core
                 foreach (BvhChannel c in channels) sb.Append(' ').Append(c.ToString());
                 w.WriteLine(sb.ToString());
             }
-            for (int child = joint + 1; child < s.JointCount; child++)
-                if (s.GetParent(child) == joint) WriteJoint(w, clip, child, depth + 1);
-            w.WriteLine(indent + "}");
         }
+
+        private static readonly string[] Indents = BuildIndents();
+
+        private static string[] BuildIndents()
+        {
+            var indents = new string[MaxIndent + 1];
+            for (int i = 0; i <= MaxIndent; i++) indents[i] = new string('\t', i);
+            return indents;
+        }
+
+        private static string Indent(int depth) => Indents[Math.Min(depth, MaxIndent)];
 
         private static string F(float v) => v.ToString("R", CultureInfo.InvariantCulture);
     }

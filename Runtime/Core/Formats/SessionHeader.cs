@@ -15,21 +15,26 @@ namespace AvatarGo.Core
         private readonly Dictionary<int, int> _indexById = new Dictionary<int, int>();
 
         /// <summary>Creates a header.</summary>
-        /// <param name="rate">Nominal frame rate in Hz (positive).</param>
-        /// <param name="devices">The devices, ids unique.</param>
+        /// <param name="rate">Nominal frame rate in Hz (<see cref="SessionLimits.MinRate"/> to <see cref="SessionLimits.MaxRate"/>).</param>
+        /// <param name="devices">The devices, ids unique and non-negative, at most <see cref="SessionLimits.MaxDevices"/>.</param>
         /// <param name="trueRoles">Synthetic sessions: the true role of each device, in device order; or null.</param>
-        /// <param name="truthHumanoid">Synthetic sessions: the wearer's skeleton and humanoid map; or null.</param>
-        /// <exception cref="ArgumentException">Ids repeat, counts differ, or the rate is not positive.</exception>
+        /// <param name="truthHumanoid">Synthetic sessions: the wearer's skeleton (at most <see cref="SessionLimits.MaxTruthJoints"/> joints) and humanoid map; or null.</param>
+        /// <exception cref="ArgumentException">Ids repeat or are negative, counts differ or exceed the format's limits, or the rate is out of range.</exception>
         public SessionHeader(float rate, IReadOnlyList<DeviceInfo> devices, IReadOnlyList<DeviceRole> trueRoles = null, HumanoidMap truthHumanoid = null)
         {
-            if (!(rate > 0f) || float.IsInfinity(rate)) throw new ArgumentOutOfRangeException(nameof(rate), rate, "The rate must be positive.");
+            if (!(rate >= SessionLimits.MinRate && rate <= SessionLimits.MaxRate))
+                throw new ArgumentOutOfRangeException(nameof(rate), rate, $"The rate must be from {SessionLimits.MinRate} to {SessionLimits.MaxRate} Hz.");
             if (devices == null) throw new ArgumentNullException(nameof(devices));
+            if (devices.Count > SessionLimits.MaxDevices) throw new ArgumentException($"{devices.Count} devices; a session has at most {SessionLimits.MaxDevices}.", nameof(devices));
+            if (truthHumanoid != null && truthHumanoid.Skeleton.JointCount > SessionLimits.MaxTruthJoints)
+                throw new ArgumentException($"The ground-truth skeleton has {truthHumanoid.Skeleton.JointCount} joints; a session holds at most {SessionLimits.MaxTruthJoints}.", nameof(truthHumanoid));
             if (trueRoles != null && trueRoles.Count != devices.Count) throw new ArgumentException("One true role per device.", nameof(trueRoles));
             Rate = rate;
             _devices = new DeviceInfo[devices.Count];
             for (int i = 0; i < _devices.Length; i++)
             {
                 _devices[i] = devices[i] ?? throw new ArgumentException($"Device {i} is null.", nameof(devices));
+                if (_devices[i].Id < 0) throw new ArgumentException($"Device id {_devices[i].Id} is negative.", nameof(devices));
                 if (_indexById.ContainsKey(_devices[i].Id)) throw new ArgumentException($"Device id {_devices[i].Id} is used twice.", nameof(devices));
                 _indexById.Add(_devices[i].Id, i);
             }

@@ -12,10 +12,15 @@ namespace AvatarGo.Core
     /// truncated or unknown-version content throws a <see cref="FormatException"/> naming the source, the
     /// 1-based line and the problem. See Documentation~/session-format.md.
     /// </summary>
+    /// <remarks>
+    /// Hostile files are safe to read: time is linear in the file's size, memory grows only with what has been read,
+    /// and files beyond <see cref="SessionLimits"/> (devices, truth joints, events per frame, line length, rate, times,
+    /// positions) are refused with the usual <c>SOURCE:LINE: problem</c> error.
+    /// </remarks>
     public sealed class SessionReader : IDisposable
     {
         private const int MaxTokens = 16;
-        private const int MaxLineLength = 1 << 20;
+        private const int MaxLineLength = SessionLimits.MaxLineLength;
 
         /// <summary>|length² - 1| up to which a quaternion is taken as unit and kept bit for bit (float drift of a long chain of products).</summary>
         private const float UnitTolerance = 1e-5f;
@@ -106,11 +111,12 @@ namespace AvatarGo.Core
                 if (NextLine()) throw Error(_lineNumber, "content after the 'end' line");
                 return false;
             }
-            if (!Is(0, "frame")) throw Error(_lineNumber, $"expected 'frame' or 'end', found '{Token(0).ToString()}'");
+            if (!Is(0, "frame")) throw Error(_lineNumber, $"expected 'frame' or 'end', found '{Quote(0)}'");
             Expect(2, "frame TIME");
             frame.Clear();
             int frameLine = _lineNumber;
             double time = Double(1);
+            if (!(Math.Abs(time) <= SessionLimits.MaxTime)) throw Error(_lineNumber, $"time {time.ToString("R", CultureInfo.InvariantCulture)} is beyond ±{SessionLimits.MaxTime.ToString("R", CultureInfo.InvariantCulture)} s");
             if (time < _lastTime) throw Error(_lineNumber, $"time {time.ToString("R", CultureInfo.InvariantCulture)} goes back before {_lastTime.ToString("R", CultureInfo.InvariantCulture)}");
             _lastTime = time;
             frame.Time = time;
@@ -133,7 +139,7 @@ namespace AvatarGo.Core
                     bool tracked;
                     if (Is(2, "tracked")) tracked = true;
                     else if (Is(2, "lost")) tracked = false;
-                    else throw Error(_lineNumber, $"expected 'tracked' or 'lost', found '{Token(2).ToString()}'");
+                    else throw Error(_lineNumber, $"expected 'tracked' or 'lost', found '{Quote(2)}'");
                     RigidPose p = ReadPose(3, tracked);
                     frame.Samples[index] = new DeviceSample(p, tracked);
                 }
@@ -150,19 +156,20 @@ namespace AvatarGo.Core
                 {
                     Expect(3, "event ID KIND");
                     int index = Device(1);
-                    if (!SessionText.TryEvent(Token(2), out DeviceEventKind kind)) throw Error(_lineNumber, $"unknown event '{Token(2).ToString()}'");
+                    if (!SessionText.TryEvent(Token(2), out DeviceEventKind kind)) throw Error(_lineNumber, $"unknown event '{Quote(2)}'");
+                    if (frame.Events.Count == SessionLimits.MaxEventsPerFrame) throw Error(_lineNumber, $"more than {SessionLimits.MaxEventsPerFrame} events in one frame (the format's limit)");
                     frame.Events.Add(new DeviceEvent(Header.Devices[index].Id, kind));
                 }
                 else if (Is(0, "truth"))
                 {
                     Expect(9, "truth BONE PX PY PZ QX QY QZ QW");
-                    if (!TryBone(Token(1), out HumanoidBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Token(1).ToString()}'");
+                    if (!TryBone(Token(1), out HumanoidBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Quote(1)}'");
                     if (frame.HasTruth[(int)bone]) throw Error(_lineNumber, $"bone {SessionText.BoneName(bone)} has two truth poses in one frame");
                     frame.Truth[(int)bone] = ReadPose(2, true);
                     frame.HasTruth[(int)bone] = true;
                 }
                 else if (_minor > SessionHeader.FormatVersion.Minor) continue; // a newer minor version's line: skipped
-                else throw Error(_lineNumber, $"unknown line '{Token(0).ToString()}' in a frame");
+                else throw Error(_lineNumber, $"unknown line '{Quote(0)}' in a frame");
             }
             for (int i = 0; i < _seen.Length; i++)
                 if (!_seen[i]) throw Error(_unread ? _lineNumber : _lineNumber + 1, $"the frame at line {frameLine} has no pose for device {Header.Devices[i].Id}{(_unread ? "" : " (truncated?)")}");
@@ -179,25 +186,28 @@ namespace AvatarGo.Core
         private SessionHeader ReadHeader(out int minor)
         {
             if (!NextLine()) throw Error(1, "the file is empty; expected 'avatargo-session 1.0'");
-            if (!Is(0, SessionText.Magic)) throw Error(_lineNumber, $"not an AvatarGo session: expected '{SessionText.Magic} 1.0', found '{Token(0).ToString()}'");
+            if (!Is(0, SessionText.Magic)) throw Error(_lineNumber, $"not an AvatarGo session: expected '{SessionText.Magic} 1.0', found '{Quote(0)}'");
             Expect(2, SessionText.Magic + " VERSION");
             ReadOnlySpan<char> v = Token(1);
             int dot = v.IndexOf('.');
             if (dot < 0 || !int.TryParse(v.Slice(0, dot).ToString(), NumberStyles.None, CultureInfo.InvariantCulture, out int major)
                 || !int.TryParse(v.Slice(dot + 1).ToString(), NumberStyles.None, CultureInfo.InvariantCulture, out minor))
-                throw Error(_lineNumber, $"version '{v.ToString()}' is not MAJOR.MINOR");
+                throw Error(_lineNumber, $"version '{Shorten(v.ToString())}' is not MAJOR.MINOR");
             if (major != SessionHeader.FormatVersion.Major)
-                throw Error(_lineNumber, $"format version {v.ToString()} is not supported (this reader reads {SessionHeader.FormatVersion.Major}.x)");
+                throw Error(_lineNumber, $"format version {Shorten(v.ToString())} is not supported (this reader reads {SessionHeader.FormatVersion.Major}.x)");
 
             float rate = float.NaN;
             bool units = false, handedness = false;
             var devices = new List<DeviceInfo>();
+            var deviceIds = new HashSet<int>();
             var trueRoles = new Dictionary<int, DeviceRole>();
             var names = new List<string>();
+            var nameSet = new HashSet<string>(StringComparer.Ordinal);
             var parents = new List<int>();
             var rest = new List<RigidPose>();
             var endSites = new List<bool>();
             var bones = new List<KeyValuePair<HumanoidBone, string>>();
+            var boneMapped = new bool[HumanoidBones.Count];
             while (true)
             {
                 if (!NextLine()) throw Error(_lineNumber + 1, "the file ends inside the header (no 'end-header')");
@@ -221,16 +231,18 @@ namespace AvatarGo.Core
                     if (!float.IsNaN(rate)) throw Error(_lineNumber, "a second 'rate' line");
                     Expect(2, "rate HZ");
                     rate = Float(1);
-                    if (!(rate > 0f)) throw Error(_lineNumber, "the rate must be positive");
+                    if (!(rate >= SessionLimits.MinRate && rate <= SessionLimits.MaxRate))
+                        throw Error(_lineNumber, $"the rate must be from {SessionLimits.MinRate.ToString(CultureInfo.InvariantCulture)} to {SessionLimits.MaxRate.ToString(CultureInfo.InvariantCulture)} Hz");
                 }
                 else if (Is(0, "device"))
                 {
                     Expect(5, "device ID CLASS SERIAL ROLE");
                     int id = Int(1);
                     if (id < 0) throw Error(_lineNumber, "device ids are non-negative");
-                    foreach (DeviceInfo d in devices) if (d.Id == id) throw Error(_lineNumber, $"device id {id} is used twice");
-                    if (!SessionText.TryClass(Token(2), out DeviceClass c)) throw Error(_lineNumber, $"unknown device class '{Token(2).ToString()}' (hmd, controller, tracker)");
-                    if (!SessionText.TryRole(Token(4), out DeviceRole role)) throw Error(_lineNumber, $"unknown role '{Token(4).ToString()}'");
+                    if (!deviceIds.Add(id)) throw Error(_lineNumber, $"device id {id} is used twice");
+                    if (devices.Count == SessionLimits.MaxDevices) throw Error(_lineNumber, $"more than {SessionLimits.MaxDevices} devices (the format's limit)");
+                    if (!SessionText.TryClass(Token(2), out DeviceClass c)) throw Error(_lineNumber, $"unknown device class '{Quote(2)}' (hmd, controller, tracker)");
+                    if (!SessionText.TryRole(Token(4), out DeviceRole role)) throw Error(_lineNumber, $"unknown role '{Quote(4)}'");
                     string serial = Token(3).ToString();
                     devices.Add(new DeviceInfo(id, c, serial == "-" ? "" : serial, role));
                 }
@@ -238,26 +250,29 @@ namespace AvatarGo.Core
                 {
                     Expect(3, "truth-role ID ROLE");
                     int id = Int(1);
-                    if (!SessionText.TryRole(Token(2), out DeviceRole role)) throw Error(_lineNumber, $"unknown role '{Token(2).ToString()}'");
+                    if (!SessionText.TryRole(Token(2), out DeviceRole role)) throw Error(_lineNumber, $"unknown role '{Quote(2)}'");
                     if (trueRoles.ContainsKey(id)) throw Error(_lineNumber, $"device {id} has two truth-role lines");
+                    if (trueRoles.Count == SessionLimits.MaxDevices) throw Error(_lineNumber, $"more than {SessionLimits.MaxDevices} truth-role lines (one per device at most)");
                     trueRoles[id] = role;
                 }
                 else if (Is(0, "truth-joint"))
                 {
                     Expect(13, "truth-joint INDEX PARENT BONE joint|end NAME PX PY PZ QX QY QZ QW");
                     if (Int(1) != names.Count) throw Error(_lineNumber, $"joint index {Int(1)} out of order (expected {names.Count})");
+                    if (names.Count == SessionLimits.MaxTruthJoints) throw Error(_lineNumber, $"more than {SessionLimits.MaxTruthJoints} truth joints (the format's limit)");
                     int parent = Int(2);
                     if (parent < -1 || parent >= names.Count) throw Error(_lineNumber, $"parent {parent} must be -1 or an earlier joint");
                     string name = Token(5).ToString();
-                    if (names.Contains(name)) throw Error(_lineNumber, $"joint name '{name}' is used twice");
+                    if (!nameSet.Add(name)) throw Error(_lineNumber, $"joint name '{Shorten(name)}' is used twice");
                     bool end;
                     if (Is(4, "end")) end = true;
                     else if (Is(4, "joint")) end = false;
-                    else throw Error(_lineNumber, $"expected 'joint' or 'end', found '{Token(4).ToString()}'");
+                    else throw Error(_lineNumber, $"expected 'joint' or 'end', found '{Quote(4)}'");
                     if (!Is(3, "-"))
                     {
-                        if (!TryBone(Token(3), out HumanoidBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Token(3).ToString()}'");
-                        foreach (var pair in bones) if (pair.Key == bone) throw Error(_lineNumber, $"bone {bone} is mapped twice");
+                        if (!TryBone(Token(3), out HumanoidBone bone)) throw Error(_lineNumber, $"unknown humanoid bone '{Quote(3)}'");
+                        if (boneMapped[(int)bone]) throw Error(_lineNumber, $"bone {bone} is mapped twice");
+                        boneMapped[(int)bone] = true;
                         bones.Add(new KeyValuePair<HumanoidBone, string>(bone, name));
                     }
                     names.Add(name);
@@ -266,7 +281,7 @@ namespace AvatarGo.Core
                     rest.Add(ReadPose(6, true));
                 }
                 else if (minor > SessionHeader.FormatVersion.Minor) continue;
-                else throw Error(_lineNumber, $"unknown header line '{Token(0).ToString()}'");
+                else throw Error(_lineNumber, $"unknown header line '{Quote(0)}'");
             }
             if (!units) throw Error(_lineNumber, "the header has no 'units' line");
             if (!handedness) throw Error(_lineNumber, "the header has no 'handedness' line");
@@ -280,11 +295,7 @@ namespace AvatarGo.Core
                 for (int i = 0; i < devices.Count; i++)
                     if (!trueRoles.TryGetValue(devices[i].Id, out roles[i])) throw Error(_lineNumber, $"device {devices[i].Id} has no truth-role while others do");
                 foreach (int id in trueRoles.Keys)
-                {
-                    bool known = false;
-                    foreach (DeviceInfo d in devices) known |= d.Id == id;
-                    if (!known) throw Error(_lineNumber, $"truth-role names unknown device {id}");
-                }
+                    if (!deviceIds.Contains(id)) throw Error(_lineNumber, $"truth-role names unknown device {id}");
             }
             try
             {
@@ -303,9 +314,11 @@ namespace AvatarGo.Core
         {
             var position = new Vector3(Float(first), Float(first + 1), Float(first + 2));
             var rotation = new Quaternion(Float(first + 3), Float(first + 4), Float(first + 5), Float(first + 6));
+            if (mustBeValid && !(Math.Abs(position.X) <= SessionLimits.MaxPosition && Math.Abs(position.Y) <= SessionLimits.MaxPosition && Math.Abs(position.Z) <= SessionLimits.MaxPosition))
+                throw Error(_lineNumber, $"position ({Quote(first)} {Quote(first + 1)} {Quote(first + 2)}) is beyond ±{SessionLimits.MaxPosition.ToString(CultureInfo.InvariantCulture)} m");
             float lengthSquared = rotation.LengthSquared();
             if (mustBeValid && !Rotations.IsUnit(rotation))
-                throw Error(_lineNumber, $"rotation ({Token(first + 3).ToString()} {Token(first + 4).ToString()} {Token(first + 5).ToString()} {Token(first + 6).ToString()}) is not a unit quaternion (length within 1e-3 of 1)");
+                throw Error(_lineNumber, $"rotation ({Quote(first + 3)} {Quote(first + 4)} {Quote(first + 5)} {Quote(first + 6)}) is not a unit quaternion (length within 1e-3 of 1)");
             // Quaternions already unit to float precision keep their exact bits (a write/read round trip is exact);
             // others are renormalised, and a (nearly) zero one in a lost sample becomes the identity.
             if (MathF.Abs(lengthSquared - 1f) > UnitTolerance) rotation = Rotations.NormalizeOr(rotation, Quaternion.Identity);
@@ -415,24 +428,29 @@ namespace AvatarGo.Core
         private int Int(int i)
         {
             if (!int.TryParse(Token(i), NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out int v))
-                throw Error(_lineNumber, $"'{Token(i).ToString()}' is not a whole number");
+                throw Error(_lineNumber, $"'{Quote(i)}' is not a whole number");
             return v;
         }
 
         private float Float(int i)
         {
             if (!float.TryParse(Token(i), NumberStyles.Float, CultureInfo.InvariantCulture, out float v) || float.IsNaN(v) || float.IsInfinity(v))
-                throw Error(_lineNumber, $"'{Token(i).ToString()}' is not a finite number");
+                throw Error(_lineNumber, $"'{Quote(i)}' is not a finite number");
             return v;
         }
 
         private double Double(int i)
         {
             if (!double.TryParse(Token(i), NumberStyles.Float, CultureInfo.InvariantCulture, out double v) || double.IsNaN(v) || double.IsInfinity(v))
-                throw Error(_lineNumber, $"'{Token(i).ToString()}' is not a finite number");
+                throw Error(_lineNumber, $"'{Quote(i)}' is not a finite number");
             return v;
         }
 
         private FormatException Error(int line, string problem) => new FormatException($"{_source}:{line}: {problem}");
+
+        // Error messages quote file content; a long token is cut so that the message stays short.
+        private static string Shorten(string s) => s.Length <= 60 ? s : s.Substring(0, 60) + "...";
+
+        private string Quote(int token) => Shorten(Token(token).ToString());
     }
 }

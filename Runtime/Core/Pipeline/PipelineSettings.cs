@@ -23,6 +23,12 @@ namespace AvatarGo.Core
         /// </summary>
         public OffsetMode Offsets { get; set; } = OffsetMode.Exact;
 
+        /// <summary>How the knees' bend direction is chosen (<see cref="KneeHintModel.PelvisAndFoot"/>); read when calibration completes.</summary>
+        public KneeHintModel KneeHints { get; set; } = KneeHintModel.PelvisAndFoot;
+
+        /// <summary>How the elbows' bend direction is chosen (<see cref="ElbowHintModel.HandAxis"/>); read when calibration completes.</summary>
+        public ElbowHintModel ElbowHints { get; set; } = ElbowHintModel.HandAxis;
+
         /// <summary>The left hand's controller and grip.</summary>
         public HandSettings LeftHand { get; } = new HandSettings();
 

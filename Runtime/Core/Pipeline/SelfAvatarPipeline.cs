@@ -287,7 +287,7 @@ namespace AvatarGo.Core
             foreach (DeviceRole role in BodyRoles.All)
                 for (int d = 0; d < _devices.Length; d++)
                     if (_devices[d].Id == active.DeviceId(role)) _roles[role] = d;
-            _mapper = new BodyTargetMapper(active, _devices, scaled, calibrationPose);
+            _mapper = new BodyTargetMapper(active, _devices, scaled, calibrationPose, Settings.KneeHints, Settings.ElbowHints);
             var reach = new float[_devices.Length];
             for (int d = 0; d < reach.Length; d++) reach[d] = -1f; // devices no role uses are not checked
             Vector3 head0 = active.DeviceAtCalibration(DeviceRole.Head).Position;
@@ -318,7 +318,7 @@ namespace AvatarGo.Core
             if (controller == null) state.NoFingerIkReason = "no controller profile is set for this hand";
             else if (HandModel.CanModel(_calibrator.ScaledAvatar, side, out string reason))
             {
-                _hands[s] = new HandModel(_calibrator.ScaledAvatar, side);
+                _hands[s] = new HandModel(_calibrator.ScaledAvatar, side, _calibrator.AvatarPose); // the T-pose's straight fingers open the hand
                 _fingers[s] = new FingerSolver(_hands[s], controller);
                 state.NoFingerIkReason = null;
             }

@@ -135,7 +135,8 @@ namespace AvatarGo.Core
             if (bones.TryGetValue(HumanoidBone.LeftShoulder, out int ls)) top = CommonAncestor(skeleton, top, skeleton.GetParent(ls));
             var chain = new List<int>();
             for (int j = top; j >= 0 && j != hips; j = skeleton.GetParent(j))
-                if (!used.Contains(j) && sides[j] == Side.None && !skeleton.IsEndSite(j)) chain.Insert(0, j);
+                if (!used.Contains(j) && sides[j] == Side.None && !skeleton.IsEndSite(j)) chain.Add(j);
+            chain.Reverse(); // hips-first (built by Add, then reversed: Insert(0, …) was quadratic on deep chains)
             if (chain.Count > 0 && skeleton.IsAncestorOrSelf(hips, chain[0]))
             {
                 Put(HumanoidBone.Spine, chain[0]);

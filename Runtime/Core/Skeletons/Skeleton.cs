@@ -16,6 +16,10 @@ namespace AvatarGo.Core
         private readonly RigidPose[] _restLocal;
         private readonly bool[] _isEndSite;
         private readonly Dictionary<string, int> _indexByName;
+        // Each joint's place in a depth-first order and the size of its subtree: joint j lies under a when
+        // _order[a] <= _order[j] < _order[a] + _subtree[a], an O(1) test however deep the hierarchy.
+        private readonly int[] _order;
+        private readonly int[] _subtree;
 
         /// <summary>
         /// Creates a skeleton. <paramref name="parents"/>[i] is the index of joint i's parent, or -1 for a root,
@@ -55,6 +59,25 @@ namespace AvatarGo.Core
                 _isEndSite[i] = isEndSite != null && isEndSite[i];
                 _indexByName.Add(name, i);
             }
+
+            // Subtree sizes from the leaves up, then depth-first places from the roots down (children after their
+            // parent, in index order); both are single passes since every parent comes before its children.
+            _subtree = new int[n];
+            _order = new int[n];
+            for (int i = n - 1; i >= 0; i--)
+            {
+                _subtree[i]++;
+                if (_parents[i] >= 0) _subtree[_parents[i]] += _subtree[i];
+            }
+            var next = new int[n];
+            int nextRoot = 0;
+            for (int i = 0; i < n; i++)
+            {
+                int parent = _parents[i];
+                if (parent < 0) { _order[i] = nextRoot; nextRoot += _subtree[i]; }
+                else { _order[i] = next[parent]; next[parent] += _subtree[i]; }
+                next[i] = _order[i] + 1;
+            }
         }
 
         /// <summary>The number of joints, end sites included.</summary>
@@ -81,9 +104,9 @@ namespace AvatarGo.Core
         /// <summary>True when <paramref name="ancestor"/> is <paramref name="joint"/> or one of its ancestors.</summary>
         public bool IsAncestorOrSelf(int ancestor, int joint)
         {
-            for (int j = joint; j >= 0; j = _parents[j])
-                if (j == ancestor) return true;
-            return false;
+            if ((uint)ancestor >= (uint)_order.Length || joint < 0) return false;
+            int place = _order[joint];
+            return place >= _order[ancestor] && place < _order[ancestor] + _subtree[ancestor];
         }
 
         /// <summary>Copies the rest local transforms into <paramref name="local"/>.</summary>

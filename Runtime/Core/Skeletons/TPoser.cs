@@ -4,60 +4,99 @@ using System.Numerics;
 namespace AvatarGo.Core
 {
     /// <summary>
-    /// Brings any humanoid skeleton (T-pose, A-pose or any bind pose) to a canonical T-pose: spine and neck
-    /// straight up, legs straight down, arms and hands horizontal along the body's left/right, facing +Z,
-    /// the lowest point of the legs on the floor (y = 0), the hips above the origin — then placed at a floor
-    /// position and facing given by a <see cref="RigidPose"/> (its rotation should be a yaw).
+    /// Brings any humanoid skeleton, whatever its bind pose (T-pose, A-pose, a straight line) and its bones' local axes,
+    /// to one canonical T-pose built from anatomy and landmarks: hip line level along +X, spine and neck straight up,
+    /// clavicles, arms and hands straight out along ±X, palms down with the thumbs forward (from the finger bases),
+    /// fingers side by side and relaxed (<see cref="RelaxedFingerDegrees"/>), legs straight down, feet flat toward the toes, facing +Z, the lowest point of the legs on the
+    /// floor (y = 0), the hips above the origin; then placed at a floor position and facing given by a
+    /// <see cref="RigidPose"/> (its rotation should be a yaw).
     /// </summary>
     /// <remarks>
-    /// Each limb segment is turned by the smallest rotation that takes it onto its target direction, parents
-    /// before children, so the twist of every bone is the bind pose's own. The body's facing is taken from
-    /// the rig: right = left hip → right hip (or shoulders), up = hips → head, forward = right × up.
+    /// <para>Every joint is oriented from where its children are in its own frame (the skeleton's rest translations,
+    /// which no bind pose changes), never from its rest rotation: a joint with two landmarks is fixed completely (the
+    /// hips by the hip line and the spine, the chest by the neck and the clavicles, the hand by the middle finger's base
+    /// and the little-to-index line, the head by its eyes and crown); a joint with one (an upper arm, a shin, a finger
+    /// bone) gets its direction. The twist about such a bone is not given by any landmark: it is the smallest turn from
+    /// <c>twistReference</c> (the rest pose unless another pose is given), and nothing in the core depends on it (the
+    /// solver bends limbs from positions; tested by rewriting clips in random local axes).</para>
+    /// <para>Fallbacks where a landmark is missing: hips whose spine starts on the hip line keep the reference pitch; a
+    /// chest whose clavicles start at one point (Rigify) or a head without eyes keeps the reference twist; a hand without
+    /// finger bases points along its child (or keeps the reference rotation when it has none, as an end site); a foot
+    /// without a child (no toes, no end site) keeps its reference rotation and stands <see cref="AnkleHeightOfLeg"/> of a
+    /// leg above the floor.</para>
     /// </remarks>
     public static class TPoser
     {
-        /// <summary>Poses <paramref name="pose"/> (a pose buffer of <paramref name="map"/>'s skeleton) in the canonical T-pose at <paramref name="placement"/>.</summary>
+        /// <summary>
+        /// The height of the ankle joint above the floor, as a fraction of the leg's length (hip to knee plus knee to
+        /// ankle): 0.08, from the body-segment proportions of Drillis and Contini (ankle 0.039 H, hip 0.53 H). In the T-pose
+        /// the toes are put on the floor this far below the ankle (the foot pitched down toward them).
+        /// </summary>
+        public const float AnkleHeightOfLeg = 0.08f;
+
+        /// <summary>
+        /// How far each finger joint (not the thumb's) is flexed toward the palm in the T-pose, in degrees: 10°, a relaxed
+        /// open hand rather than a stiff one. The T-pose is the finger IK's open hand (<see cref="HandModel"/>): from fully
+        /// straight fingers the Mixamo hand's middle finger no longer reached the VIVE wand's surface (5 mm; 0 mm at 10°).
+        /// </summary>
+        public const float RelaxedFingerDegrees = 10f;
+
+        /// <summary>The steepest the foot is pitched down toward its toes in the T-pose (60°), for a toe landmark close to the ankle.</summary>
+        private const float MaxFootPitchDegrees = 60f;
+
+        /// <summary>
+        /// Poses <paramref name="pose"/> (a pose buffer of <paramref name="map"/>'s skeleton) in the canonical T-pose at
+        /// <paramref name="placement"/>; bone twists no landmark fixes come from the rest pose.
+        /// </summary>
         /// <exception cref="ArgumentException">The rig lacks a required humanoid bone.</exception>
-        public static void Apply(HumanoidMap map, SkeletonPose pose, RigidPose placement)
+        public static void Apply(HumanoidMap map, SkeletonPose pose, RigidPose placement) => Apply(map, pose, placement, null);
+
+        /// <summary>
+        /// As <see cref="Apply(HumanoidMap, SkeletonPose, RigidPose)"/>, taking the twists no landmark fixes (about single-child
+        /// bones, and the rotation of joints that are not humanoid bones) from <paramref name="twistReference"/>: local
+        /// poses of the skeleton (only their rotations are read), or null for the rest pose. A simulated wearer passes the
+        /// first frame of its motion, so that its T-pose and its motion share those twists.
+        /// </summary>
+        /// <exception cref="ArgumentException">The rig lacks a required humanoid bone, or the reference has the wrong length.</exception>
+        public static void Apply(HumanoidMap map, SkeletonPose pose, RigidPose placement, RigidPose[] twistReference)
         {
             if (map == null) throw new ArgumentNullException(nameof(map));
             if (pose == null || pose.Skeleton != map.Skeleton) throw new ArgumentException("The pose must belong to the map's skeleton.", nameof(pose));
             map.RequireComplete(nameof(map));
             Skeleton s = map.Skeleton;
+            if (twistReference != null && twistReference.Length != s.JointCount)
+                throw new ArgumentException($"The twist reference needs {s.JointCount} local poses, got {twistReference.Length}.", nameof(twistReference));
             pose.Origin = RigidPose.Identity;
-            pose.ResetToRest();
-            RigidPose[] w = pose.World;
-
-            // 1. Turn the whole body so that it faces +Z with its spine along +Y.
-            Vector3 right = w[map[HumanoidBone.RightUpperLeg]].Position - w[map[HumanoidBone.LeftUpperLeg]].Position;
-            if (right.LengthSquared() < 1e-8f) right = w[map[HumanoidBone.RightUpperArm]].Position - w[map[HumanoidBone.LeftUpperArm]].Position;
-            Vector3 up = w[map[HumanoidBone.Head]].Position - w[map[HumanoidBone.Hips]].Position;
-            Quaternion body = Rotations.LookRotation(Vector3.Cross(right, up), up);
-            RotateRoots(pose, Quaternion.Conjugate(body));
-
-            // 2. Straighten the chains.
-            HumanoidBone[] spine = { HumanoidBone.Spine, HumanoidBone.Chest, HumanoidBone.UpperChest, HumanoidBone.Neck, HumanoidBone.Head };
-            for (int i = 0; i < spine.Length - 1; i++)
+            // Rest translations (the skeleton's proportions), reference rotations (the twists nothing else fixes).
+            for (int j = 0; j < s.JointCount; j++)
             {
-                if (!map.Has(spine[i])) continue;
-                for (int k = i + 1; k < spine.Length; k++)
-                    if (map.Has(spine[k])) { Align(map, pose, spine[i], spine[k], Vector3.UnitY); break; }
+                RigidPose rest = s.GetRestLocal(j);
+                Quaternion rotation = twistReference != null && !s.IsEndSite(j) ? Rotations.NormalizeOr(twistReference[j].Rotation, rest.Rotation) : rest.Rotation;
+                pose.Local[j] = new RigidPose(rest.Position, rotation);
             }
-            foreach (bool left in new[] { true, false })
+            pose.UpdateWorld();
+            var roles = new BoneRole[s.JointCount];
+            for (int j = 0; j < roles.Length; j++) roles[j] = RoleOf(map, map.BoneOf(j));
+
+            // Parents first: each joint turned so that its landmarks point where the T-pose has them.
+            for (int j = 0; j < s.JointCount; j++)
             {
-                Vector3 outward = left ? -Vector3.UnitX : Vector3.UnitX;
-                Align(map, pose, left ? HumanoidBone.LeftUpperLeg : HumanoidBone.RightUpperLeg, left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg, -Vector3.UnitY);
-                Align(map, pose, left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg, left ? HumanoidBone.LeftFoot : HumanoidBone.RightFoot, -Vector3.UnitY);
-                Align(map, pose, left ? HumanoidBone.LeftUpperArm : HumanoidBone.RightUpperArm, left ? HumanoidBone.LeftLowerArm : HumanoidBone.RightLowerArm, outward);
-                Align(map, pose, left ? HumanoidBone.LeftLowerArm : HumanoidBone.RightLowerArm, left ? HumanoidBone.LeftHand : HumanoidBone.RightHand, outward);
-                Align(map, pose, left ? HumanoidBone.LeftHand : HumanoidBone.RightHand, left ? HumanoidBone.LeftMiddleProximal : HumanoidBone.RightMiddleProximal, outward);
+                if (s.IsEndSite(j)) continue;
+                if (Orient(map, pose, j, roles[j])) pose.UpdateWorld();
             }
 
-            // 3. Stand on the floor, hips above the origin, then place.
+            // Stand on the floor (the lowest point of the legs, or the ankle's anatomical height for feet without toes),
+            // hips above the origin, then place.
             float floor = float.MaxValue;
             int leftLeg = map[HumanoidBone.LeftUpperLeg], rightLeg = map[HumanoidBone.RightUpperLeg];
+            RigidPose[] w = pose.World;
             for (int j = 0; j < s.JointCount; j++)
                 if (s.IsAncestorOrSelf(leftLeg, j) || s.IsAncestorOrSelf(rightLeg, j)) floor = Math.Min(floor, w[j].Position.Y);
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+            {
+                int foot = map[HumanoidBones.OnSide(HumanoidBone.LeftFoot, side)];
+                if (ToeLandmark(map, side) < 0) floor = Math.Min(floor, w[foot].Position.Y - AnkleHeightOfLeg * LegLength(map, pose, side));
+            }
             Vector3 hips = w[map[HumanoidBone.Hips]].Position;
             Vector3 shift = new Vector3(-hips.X, -floor, -hips.Z);
             for (int j = 0; j < s.JointCount; j++)
@@ -66,8 +105,8 @@ namespace AvatarGo.Core
         }
 
         /// <summary>
-        /// The height of the eyes above the floor for a skeleton posed by <see cref="Apply"/>: the midpoint of the
-        /// eye bones when the rig has them, otherwise the head joint plus <see cref="HeadToEyes"/> in the body frame.
+        /// The height of the eyes above the floor for a skeleton posed by <see cref="Apply(HumanoidMap, SkeletonPose, RigidPose)"/>:
+        /// the midpoint of the eye bones when the rig has them, otherwise the head joint plus <see cref="HeadToEyes"/> in the body frame.
         /// </summary>
         public static Vector3 EyePosition(HumanoidMap map, SkeletonPose pose, Quaternion bodyRotation)
         {
@@ -83,23 +122,234 @@ namespace AvatarGo.Core
         /// </summary>
         public static readonly Vector3 HeadToEyes = new Vector3(0f, 0.07f, 0.09f);
 
-        private static void RotateRoots(SkeletonPose pose, Quaternion rotation)
+        /// <summary>
+        /// The joint that marks where a foot's toes are: the toes bone, else the foot's child farthest from it (an End Site
+        /// at the toes, as in most BVH rigs), else -1 (no landmark: the foot keeps its reference rotation).
+        /// </summary>
+        public static int ToeLandmark(HumanoidMap map, BodySide side)
         {
-            Skeleton s = pose.Skeleton;
-            for (int j = 0; j < s.JointCount; j++)
-                if (s.GetParent(j) < 0)
-                    pose.Local[j] = new RigidPose(Vector3.Transform(pose.Local[j].Position, rotation), Quaternion.Normalize(rotation * pose.Local[j].Rotation));
-            pose.UpdateWorld();
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            HumanoidBone toes = HumanoidBones.OnSide(HumanoidBone.LeftToes, side);
+            if (map.Has(toes)) return map[toes];
+            return FarthestChild(map.Skeleton, map[HumanoidBones.OnSide(HumanoidBone.LeftFoot, side)]);
         }
 
-        private static void Align(HumanoidMap map, SkeletonPose pose, HumanoidBone bone, HumanoidBone child, Vector3 direction)
+        /// <summary>
+        /// The joint that marks where a hand points, for hands without finger bases (<see cref="HandModel.CanModel"/>): the
+        /// hand's child farthest from it (an End Site at the knuckles or fingertips), else -1 (the forearm's direction is used).
+        /// </summary>
+        public static int HandLandmark(HumanoidMap map, BodySide side)
         {
-            int j = map[bone], c = map[child];
-            if (j < 0 || c < 0) return;
-            Vector3 d = pose.World[c].Position - pose.World[j].Position;
-            if (d.LengthSquared() < 1e-10f) return;
-            pose.RotateWorld(j, Rotations.FromTo(d, direction));
-            pose.UpdateWorld();
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            HumanoidBone middle = HumanoidBones.Finger(side, Finger.Middle, Phalanx.Proximal);
+            if (map.Has(middle)) return map[middle];
+            return FarthestChild(map.Skeleton, map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]);
+        }
+
+        // ---- What each joint is turned to ------------------------------------------------------------------------------
+
+        private enum BoneRole { Other, Hips, Spine, Head, Clavicle, UpperArm, LowerArm, Hand, Finger, UpperLeg, LowerLeg, Foot, Toes }
+
+        private static BoneRole RoleOf(HumanoidMap map, HumanoidBone bone)
+        {
+            switch (bone)
+            {
+                case HumanoidBone.Hips: return BoneRole.Hips;
+                case HumanoidBone.Spine: case HumanoidBone.Chest: case HumanoidBone.UpperChest: case HumanoidBone.Neck: return BoneRole.Spine;
+                case HumanoidBone.Head: return BoneRole.Head;
+                case HumanoidBone.LeftShoulder: case HumanoidBone.RightShoulder: return BoneRole.Clavicle;
+                case HumanoidBone.LeftUpperArm: case HumanoidBone.RightUpperArm: return BoneRole.UpperArm;
+                case HumanoidBone.LeftLowerArm: case HumanoidBone.RightLowerArm: return BoneRole.LowerArm;
+                case HumanoidBone.LeftHand: case HumanoidBone.RightHand: return BoneRole.Hand;
+                case HumanoidBone.LeftUpperLeg: case HumanoidBone.RightUpperLeg: return BoneRole.UpperLeg;
+                case HumanoidBone.LeftLowerLeg: case HumanoidBone.RightLowerLeg: return BoneRole.LowerLeg;
+                case HumanoidBone.LeftFoot: case HumanoidBone.RightFoot: return BoneRole.Foot;
+                case HumanoidBone.LeftToes: case HumanoidBone.RightToes: return BoneRole.Toes;
+                default: return HumanoidBones.IsFinger(bone) ? BoneRole.Finger : BoneRole.Other;
+            }
+        }
+
+        // Turns joint j (its parent already posed) so that its landmarks point where the T-pose has them. Returns false when
+        // it keeps its reference rotation.
+        private static bool Orient(HumanoidMap map, SkeletonPose pose, int j, BoneRole role)
+        {
+            HumanoidBone bone = map.BoneOf(j);
+            bool left = HumanoidBones.IsLeft(bone);
+            BodySide side = left ? BodySide.Left : BodySide.Right;
+            Vector3 outward = left ? -Vector3.UnitX : Vector3.UnitX;
+            switch (role)
+            {
+                case BoneRole.Hips:
+                {
+                    int l = map[HumanoidBone.LeftUpperLeg], r = map[HumanoidBone.RightUpperLeg], spine = map[HumanoidBone.Spine];
+                    Vector3 mid = (At(pose, l) + At(pose, r)) * 0.5f;
+                    return Turn(pose, j, At(pose, r) - At(pose, l), Vector3.UnitX, At(pose, spine) - mid, Vector3.UnitY);
+                }
+                case BoneRole.Spine:
+                {
+                    int next = NextOnSpine(map, bone);
+                    int ls = map[HumanoidBone.LeftShoulder], rs = map[HumanoidBone.RightShoulder];
+                    bool carriesClavicles = ls >= 0 && rs >= 0 && pose.Skeleton.GetParent(ls) == j && pose.Skeleton.GetParent(rs) == j;
+                    Vector3 across = carriesClavicles ? At(pose, rs) - At(pose, ls) : Vector3.Zero;
+                    return Turn(pose, j, At(pose, next) - At(pose, j), Vector3.UnitY, across, Vector3.UnitX);
+                }
+                case BoneRole.Head:
+                {
+                    // The eye line level along +X and the crown up; without a crown, the eyes where HeadToEyes puts them.
+                    int le = map[HumanoidBone.LeftEye], re = map[HumanoidBone.RightEye];
+                    if (le < 0 || re < 0) return false;
+                    Vector3 eyes = (At(pose, le) + At(pose, re)) * 0.5f - At(pose, j);
+                    int crown = Crown(map, j);
+                    return crown >= 0
+                        ? Turn(pose, j, At(pose, re) - At(pose, le), Vector3.UnitX, At(pose, crown) - At(pose, j), Vector3.UnitY)
+                        : Turn(pose, j, At(pose, re) - At(pose, le), Vector3.UnitX, eyes, Vector3.Normalize(HeadToEyes));
+                }
+                case BoneRole.Clavicle:
+                    return Turn(pose, j, At(pose, map[HumanoidBones.OnSide(HumanoidBone.LeftUpperArm, side)]) - At(pose, j), outward);
+                case BoneRole.UpperArm:
+                    return Turn(pose, j, At(pose, map[HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side)]) - At(pose, j), outward);
+                case BoneRole.LowerArm:
+                    return Turn(pose, j, At(pose, map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]) - At(pose, j), outward);
+                case BoneRole.Hand:
+                {
+                    // Palm down, thumb forward: the middle finger's base out along the arm, little-to-index forward.
+                    int index = map[HumanoidBones.Finger(side, Finger.Index, Phalanx.Proximal)], little = map[HumanoidBones.Finger(side, Finger.Little, Phalanx.Proximal)];
+                    int landmark = HandLandmark(map, side);
+                    if (landmark < 0) return false;
+                    Vector3 across = index >= 0 && little >= 0 ? At(pose, index) - At(pose, little) : Vector3.Zero;
+                    return Turn(pose, j, At(pose, landmark) - At(pose, j), outward, across, Vector3.UnitZ);
+                }
+                case BoneRole.Finger:
+                {
+                    // The four fingers side by side along the hand (wrist to the middle finger's base), the thumb
+                    // along the line from the wrist through its first joint.
+                    int child = FarthestChild(pose.Skeleton, j);
+                    if (child < 0) return false;
+                    int hand = map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)];
+                    HumanoidBone firstBone = FirstJointOf(bone);
+                    int first = firstBone == HumanoidBones.Finger(side, Finger.Thumb, Phalanx.Proximal) ? map[firstBone] : HandLandmark(map, side);
+                    Vector3 direction = At(pose, first) - At(pose, hand);
+                    if (!(direction.LengthSquared() > 1e-12f)) return false;
+                    direction = Vector3.Normalize(direction);
+                    if (first != map[HumanoidBones.Finger(side, Finger.Thumb, Phalanx.Proximal)])
+                    {
+                        // Relaxed, not stiff: each joint flexed RelaxedFingerDegrees toward the palm (down).
+                        int k = (int)bone - (int)firstBone;
+                        float curl = RelaxedFingerDegrees * (k + 1) * Rotations.Deg2Rad;
+                        Vector3 palm = -Vector3.UnitY;
+                        direction = Vector3.Normalize(direction * MathF.Cos(curl) + Vectors.NormalizeOr(Vectors.ProjectOnPlane(palm, direction), palm) * MathF.Sin(curl));
+                    }
+                    return Turn(pose, j, At(pose, child) - At(pose, j), direction);
+                }
+                case BoneRole.UpperLeg:
+                    return Turn(pose, j, At(pose, map[HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, side)]) - At(pose, j), -Vector3.UnitY);
+                case BoneRole.LowerLeg:
+                    return Turn(pose, j, At(pose, map[HumanoidBones.OnSide(HumanoidBone.LeftFoot, side)]) - At(pose, j), -Vector3.UnitY);
+                case BoneRole.Foot:
+                {
+                    // Toward the toes, straight ahead, pitched down so that the toes touch the floor with the ankle at its
+                    // anatomical height.
+                    int toe = ToeLandmark(map, side);
+                    if (toe < 0) return false;
+                    Vector3 toToe = At(pose, toe) - At(pose, j);
+                    float reach = toToe.Length();
+                    if (!(reach > 1e-6f)) return false;
+                    float drop = Math.Min(AnkleHeightOfLeg * LegLength(map, pose, side) / reach, MathF.Sin(MaxFootPitchDegrees * Rotations.Deg2Rad));
+                    return Turn(pose, j, toToe, new Vector3(0f, -drop, MathF.Sqrt(1f - drop * drop)));
+                }
+                case BoneRole.Toes:
+                {
+                    int tip = FarthestChild(pose.Skeleton, j);
+                    return tip >= 0 && Turn(pose, j, At(pose, tip) - At(pose, j), Vector3.UnitZ);
+                }
+                default:
+                    return false;
+            }
+        }
+
+        // Turns joint j by the smallest world rotation taking its current `from` direction onto `to`.
+        private static bool Turn(SkeletonPose pose, int j, Vector3 from, Vector3 to)
+        {
+            if (from.LengthSquared() < 1e-12f) return false;
+            pose.RotateWorld(j, Rotations.FromTo(from, to));
+            return true;
+        }
+
+        // Turns joint j so that `from` points along `to` and `fromSecond` (made perpendicular) along `toSecond`; with no usable
+        // second direction (too short, or along the first), by the smallest rotation for the first alone.
+        private static bool Turn(SkeletonPose pose, int j, Vector3 from, Vector3 to, Vector3 fromSecond, Vector3 toSecond)
+        {
+            if (from.LengthSquared() < 1e-12f) return Turn(pose, j, fromSecond, toSecond);
+            Vector3 f = Vector3.Normalize(from);
+            Vector3 second = fromSecond - Vector3.Dot(fromSecond, f) * f;
+            if (second.LengthSquared() < 1e-4f * Math.Max(from.LengthSquared(), fromSecond.LengthSquared()) || second.LengthSquared() < 1e-12f)
+                return Turn(pose, j, from, to);
+            Vector3 t = Vector3.Normalize(to);
+            Vector3 targetSecond = Vectors.NormalizeOr(toSecond - Vector3.Dot(toSecond, t) * t, Vector3.UnitY);
+            Quaternion current = Frame(f, Vector3.Normalize(second));
+            Quaternion target = Frame(t, targetSecond);
+            pose.RotateWorld(j, Quaternion.Normalize(target * Quaternion.Conjugate(current)));
+            return true;
+        }
+
+        // The rotation taking +X to a and +Y to b (a, b unit and perpendicular).
+        private static Quaternion Frame(Vector3 a, Vector3 b) => Rotations.FromBasis(a, b, Vector3.Cross(a, b));
+
+        private static Vector3 At(SkeletonPose pose, int joint) => pose.World[joint].Position;
+
+        private static int NextOnSpine(HumanoidMap map, HumanoidBone bone)
+        {
+            HumanoidBone[] chain = { HumanoidBone.Spine, HumanoidBone.Chest, HumanoidBone.UpperChest, HumanoidBone.Neck, HumanoidBone.Head };
+            for (int i = Array.IndexOf(chain, bone) + 1; i < chain.Length; i++)
+                if (map.Has(chain[i]) && map.Skeleton.IsAncestorOrSelf(map[bone], map[chain[i]])) return map[chain[i]];
+            return map[HumanoidBone.Head];
+        }
+
+        // The head's child that is neither an eye nor the jaw and lies above the eyes' level: the crown, if the rig has one.
+        private static int Crown(HumanoidMap map, int head)
+        {
+            Skeleton s = map.Skeleton;
+            int best = -1;
+            float bestLength = 0f;
+            for (int c = head + 1; c < s.JointCount; c++)
+            {
+                if (s.GetParent(c) != head) continue;
+                HumanoidBone bone = map.BoneOf(c);
+                if (bone == HumanoidBone.LeftEye || bone == HumanoidBone.RightEye || bone == HumanoidBone.Jaw) continue;
+                float length = s.GetRestLocal(c).Position.Length();
+                if (length > bestLength) { best = c; bestLength = length; }
+            }
+            return best;
+        }
+
+        private static int FarthestChild(Skeleton s, int joint)
+        {
+            int best = -1;
+            float bestLength = 1e-6f;
+            for (int c = joint + 1; c < s.JointCount; c++)
+            {
+                if (s.GetParent(c) != joint) continue;
+                float length = s.GetRestLocal(c).Position.Length();
+                if (length > bestLength) { best = c; bestLength = length; }
+            }
+            return best;
+        }
+
+        private static HumanoidBone FirstJointOf(HumanoidBone fingerBone)
+        {
+            int first = (int)HumanoidBone.LeftThumbProximal;
+            int offset = (int)fingerBone - first;
+            if (offset >= 15) offset -= 15;   // right hand
+            int start = (int)fingerBone - offset % 3;
+            return (HumanoidBone)start;
+        }
+
+        private static float LegLength(HumanoidMap map, SkeletonPose pose, BodySide side)
+        {
+            Vector3 hip = At(pose, map[HumanoidBones.OnSide(HumanoidBone.LeftUpperLeg, side)]);
+            Vector3 knee = At(pose, map[HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, side)]);
+            Vector3 ankle = At(pose, map[HumanoidBones.OnSide(HumanoidBone.LeftFoot, side)]);
+            return Vector3.Distance(hip, knee) + Vector3.Distance(knee, ankle);
         }
     }
 }

@@ -16,7 +16,8 @@ namespace AvatarGo.Core
     /// back instead of folding it at one joint. φ is then refined (secant method, at most 12 steps) until the
     /// distance from the first spine joint to the head joint is the target's, and one swing at the first spine
     /// joint aims the head at its target: the head ends within 0.1 mm of its target wherever the spine can reach.
-    /// With no bend (upright wearer) the axis is the hips' right axis, so a shorter reach curves the back forward.
+    /// With no bend (upright wearer) the axis is the hip line (left to right hip joint), so a shorter reach curves the
+    /// back forward.
     /// When the spine ends in a neck below other spine joints, the neck is then moved part of the way
     /// (<see cref="NeckFollowsHead"/>) to where it would be if it had turned with the head, the joints below it are bent
     /// again the same way to reach it, and the neck aims the head at its target.
@@ -153,10 +154,11 @@ namespace AvatarGo.Core
             if (bend.W < 0f) bend = new Quaternion(-bend.X, -bend.Y, -bend.Z, -bend.W);
             float sinHalf = new Vector3(bend.X, bend.Y, bend.Z).Length();
             float alpha = 2f * MathF.Atan2(sinHalf, bend.W);
-            // Upright (no bend to take the axis from): a bend forward, about the hips' right axis.
+            // Upright (no bend to take the axis from): a bend forward, about the hip line (left to right hip joint; not
+            // a local axis of the hips, which differs between rigs).
             Vector3 axis = alpha > 1e-3f
                 ? new Vector3(bend.X, bend.Y, bend.Z) / sinHalf
-                : Vector3.Transform(Vector3.UnitX, w[_hips].Rotation);
+                : Vectors.NormalizeOr(w[_rightLeg.Root].Position - w[_leftLeg.Root].Position, Vector3.UnitX);
             Vector3 origin = w[_spine[0]].Position;
             float wanted = Vector3.Distance(origin, endTarget);
 

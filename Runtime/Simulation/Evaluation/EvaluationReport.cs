@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using AvatarGo.Core;
 
@@ -35,6 +36,19 @@ namespace AvatarGo.Simulation
 
         /// <summary>Difference of the knee's interior angle, avatar vs wearer, in degrees.</summary>
         public ErrorSeries KneeAngleDegrees { get; } = new ErrorSeries();
+
+        /// <summary>
+        /// Per knee and elbow (LeftLowerLeg, RightLowerLeg, LeftLowerArm, RightLowerArm, in that order), the angle between
+        /// the wearer's and the avatar's bend directions about the limb's axis: what sees a knee or elbow bent the wrong way.
+        /// </summary>
+        public BendPlaneReport[] BendPlanes { get; } =
+        {
+            new BendPlaneReport(HumanoidBone.LeftLowerLeg), new BendPlaneReport(HumanoidBone.RightLowerLeg),
+            new BendPlaneReport(HumanoidBone.LeftLowerArm), new BendPlaneReport(HumanoidBone.RightLowerArm),
+        };
+
+        /// <summary>The bend-plane report of one knee or elbow (LeftLowerLeg, RightLowerLeg, LeftLowerArm, RightLowerArm), or null.</summary>
+        public BendPlaneReport BendPlane(HumanoidBone joint) => Array.Find(BendPlanes, b => b.Joint == joint);
 
         /// <summary>Frames in which a hand could not reach its controller.</summary>
         public int UnreachedHandFrames { get; internal set; }

@@ -30,7 +30,19 @@ namespace AvatarGo.Simulation
         /// <param name="disturbance">Optional: losses, noise and teleports injected into every frame after calibration.</param>
         /// <exception cref="ArgumentException">The session has no ground truth and no avatar is given.</exception>
         public static EvaluationReport Evaluate(SessionReader reader, PipelineSettings settings, HumanoidMap avatar = null, Action<SelfAvatarPipeline> onFrame = null,
-            DisturbanceOptions disturbance = null)
+            DisturbanceOptions disturbance = null) =>
+            Run(reader, settings, avatar, onFrame == null ? null : new Action<SelfAvatarPipeline, SessionFrame>((pipeline, frame) => onFrame(pipeline)), disturbance);
+
+        /// <summary>
+        /// As <see cref="Evaluate(SessionReader, PipelineSettings, HumanoidMap, Action{SelfAvatarPipeline}, DisturbanceOptions)"/>, with
+        /// <paramref name="onFrame"/> also given the session frame (its ground truth) of each solved frame after calibration:
+        /// to write the solved and true joints out, for example.
+        /// </summary>
+        public static EvaluationReport EvaluateWithTruth(SessionReader reader, PipelineSettings settings, HumanoidMap avatar,
+            Action<SelfAvatarPipeline, SessionFrame> onFrame, DisturbanceOptions disturbance = null) => Run(reader, settings, avatar, onFrame, disturbance);
+
+        private static EvaluationReport Run(SessionReader reader, PipelineSettings settings, HumanoidMap avatar, Action<SelfAvatarPipeline, SessionFrame> onFrame,
+            DisturbanceOptions disturbance)
         {
             if (reader == null) throw new ArgumentNullException(nameof(reader));
             if (settings == null) throw new ArgumentNullException(nameof(settings));
@@ -71,7 +83,7 @@ namespace AvatarGo.Simulation
                 SkeletonPose pose = pipeline.Pose;
                 if (pipeline.LastSwapTime == frame.Time) report.RoleSwaps++;
                 if (!pipeline.Hand(BodySide.Left).Reached || !pipeline.Hand(BodySide.Right).Reached) report.UnreachedHandFrames++;
-                onFrame?.Invoke(pipeline);
+                onFrame?.Invoke(pipeline, frame);
                 report.Frames++;
                 for (int b = 0; b < HumanoidBones.Count; b++)
                 {
@@ -102,6 +114,7 @@ namespace AvatarGo.Simulation
                     double truthAngle = KneeAngle(frame.Truth[(int)hip].Position, frame.Truth[(int)knee].Position, frame.Truth[(int)ankle].Position);
                     report.KneeAngleDegrees.Add(Math.Abs(avatarAngle - truthAngle));
                 }
+                MeasureBendPlanes(pose, scaled, frame, report);
                 if (report.Fingers != null) MeasureFingers(pipeline, report.Fingers);
                 disturbed?.Measure(frame);
             }
@@ -133,6 +146,29 @@ namespace AvatarGo.Simulation
             }
             if (any) fingers.Frames++;
         }
+
+        // Per knee and elbow: the signed angle about the wearer's limb axis from the wearer's bend direction to the avatar's.
+        private static void MeasureBendPlanes(SkeletonPose pose, HumanoidMap scaled, SessionFrame frame, EvaluationReport report)
+        {
+            foreach (BendPlaneReport limb in report.BendPlanes)
+            {
+                HumanoidBone middle = limb.Joint, root = HumanoidBones.Parent(middle), end = LimbEnd(middle);
+                if (!frame.HasTruth[(int)root] || !frame.HasTruth[(int)middle] || !frame.HasTruth[(int)end]) continue;
+                double angle = BendPlaneReport.SignedAngleDegrees(frame.Truth[(int)root].Position, frame.Truth[(int)middle].Position, frame.Truth[(int)end].Position,
+                    pose.World[scaled[root]].Position, pose.World[scaled[middle]].Position, pose.World[scaled[end]].Position);
+                if (double.IsNaN(angle)) limb.StraightFrames++;
+                else limb.Add(angle);
+            }
+        }
+
+        /// <summary>The end joint of the limb whose middle joint is <paramref name="middle"/> (a knee's ankle, an elbow's wrist).</summary>
+        public static HumanoidBone LimbEnd(HumanoidBone middle) => middle switch
+        {
+            HumanoidBone.LeftLowerLeg => HumanoidBone.LeftFoot,
+            HumanoidBone.RightLowerLeg => HumanoidBone.RightFoot,
+            HumanoidBone.LeftLowerArm => HumanoidBone.LeftHand,
+            _ => HumanoidBone.RightHand,
+        };
 
         private static double KneeAngle(Vector3 hip, Vector3 knee, Vector3 ankle) => Vectors.AngleDegrees(hip - knee, ankle - knee);
     }

@@ -93,8 +93,14 @@ namespace AvatarGo.Core.Tests
                     lines[motion + 1] = "Frames: 70";
                     return lastFrame;
                 case "huge frame count":
-                    lines[motion + 1] = "Frames: 10000000";
+                    // 700,000 frames of 168 channels fit the reader's limit of values: memory grows with the frame
+                    // lines read, and the file fails where it ends.
+                    lines[motion + 1] = "Frames: 700000";
                     return lastFrame;
+                case "frame count beyond the limit":
+                    // 10,000,000 × 168 values cannot be held: refused at once, at the Frames line.
+                    lines[motion + 1] = "Frames: 10000000";
+                    return motion + 1;
                 case "offset beyond float range":
                 {
                     int i = IndexOf(lines, l => l.Contains("OFFSET"));
@@ -144,6 +150,7 @@ namespace AvatarGo.Core.Tests
         [TestCase("more frames declared")]
         [TestCase("fewer frames declared")]
         [TestCase("huge frame count")]
+        [TestCase("frame count beyond the limit")]
         [TestCase("offset beyond float range")]
         [TestCase("unclosed joint")]
         [TestCase("duplicate joint")]

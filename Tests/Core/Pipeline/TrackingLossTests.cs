@@ -15,10 +15,17 @@ namespace AvatarGo.Core.Tests
         private static string _mocapBank;
         private static string MocapBank => _mocapBank ?? (_mocapBank = Sessions.Simulate("mocapbank_30fps.bvh"));
 
-        private static EvaluationReport Evaluate(string session, DisturbanceOptions disturbance)
+        private static EvaluationReport Evaluate(string session, DisturbanceOptions disturbance, System.Collections.Generic.List<Vector3[]> endEffectors = null)
         {
             using SessionReader reader = Sessions.Read(session);
-            return SessionEvaluator.Evaluate(reader, new PipelineSettings(), null, null, disturbance);
+            Action<SelfAvatarPipeline> record = endEffectors == null ? null : pipeline =>
+            {
+                var joints = new Vector3[BodyRoles.Count];
+                foreach (DeviceRole role in BodyRoles.All)
+                    joints[BodyRoles.IndexOf(role)] = pipeline.Pose.World[pipeline.ScaledAvatar[BodyRoles.JointOf(role)]].Position;
+                endEffectors.Add(joints);
+            };
+            return SessionEvaluator.Evaluate(reader, new PipelineSettings(), null, record, disturbance);
         }
 
         [TestCase(1)]
@@ -26,8 +33,10 @@ namespace AvatarGo.Core.Tests
         [TestCase(3)]
         public void FivePercentBurstyLossesOnEveryDeviceComeBackWithoutAJump(int seed)
         {
-            EvaluationReport clean = Evaluate(MocapBank, null);
-            EvaluationReport lossy = Evaluate(MocapBank, new DisturbanceOptions { DropoutRate = 0.05f, DropoutMaxSeconds = 1f, Seed = seed });
+            var cleanFrames = new System.Collections.Generic.List<Vector3[]>();
+            var lossyFrames = new System.Collections.Generic.List<Vector3[]>();
+            EvaluationReport clean = Evaluate(MocapBank, null, cleanFrames);
+            EvaluationReport lossy = Evaluate(MocapBank, new DisturbanceOptions { DropoutRate = 0.05f, DropoutMaxSeconds = 1f, Seed = seed }, lossyFrames);
             DisturbanceReport d = lossy.Disturbance;
             int deviceFrames = 6 * lossy.Frames;
             Assert.That(d.DisturbedDeviceFrames, Is.InRange(0.03 * deviceFrames, 0.08 * deviceFrames), "about 5 % of the device-frames lost");
@@ -36,7 +45,19 @@ namespace AvatarGo.Core.Tests
             Assert.That(lossy.AllJointsMm.InvalidCount, Is.EqualTo(0), "never a NaN on a bone");
             // Outside the losses (and the second after each), the end effectors are where they are without losses.
             Assert.That(d.UndisturbedMm.Median, Is.EqualTo(clean.EndEffectorMm.Median).Within(0.2), "median (mm)");
-            Assert.That(d.UndisturbedMm.P95, Is.EqualTo(clean.EndEffectorMm.P95).Within(0.5), "p95 (mm)");
+            // Frame by frame: once every device has been back for a second, the avatar is the one without losses (the
+            // recovery blend has decayed to nothing), so at least as many frames as were calm agree to 0.05 mm.
+            Assert.That(lossyFrames.Count, Is.EqualTo(cleanFrames.Count), "the same frames solved");
+            int identical = 0;
+            for (int i = 0; i < cleanFrames.Count; i++)
+            {
+                float largest = 0f;
+                for (int e = 0; e < cleanFrames[i].Length; e++) largest = Math.Max(largest, Vector3.Distance(cleanFrames[i][e], lossyFrames[i][e]));
+                if (largest <= 0.00005f) identical++;
+            }
+            int calmFrames = d.UndisturbedMm.Count / BodyRoles.Count;
+            Assert.That(calmFrames, Is.GreaterThan(lossy.Frames / 10), "enough calm frames to compare");
+            Assert.That(identical, Is.GreaterThanOrEqualTo(calmFrames), "frames at which the avatar is the one without losses");
         }
 
         [Test]

@@ -203,7 +203,7 @@ internal sealed class BenchFixture
         f._wrists = new[] { new RigidPose[f.Frames], new RigidPose[f.Frames] };
         f._controllers = new[] { new RigidPose[f.Frames], new RigidPose[f.Frames] };
         foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
-            if (f._pipeline.Hand(side).HasFingerIk) f._fingers[(int)side] = new FingerSolver(new HandModel(scaled, side), controller);
+            if (f._pipeline.Hand(side).HasFingerIk) f._fingers[(int)side] = new FingerSolver(new HandModel(scaled, side, f._pipeline.Pose), controller);
         int leftHand = scaled[HumanoidBone.LeftHand], rightHand = scaled[HumanoidBone.RightHand];
         for (int i = 0; i < f.Frames; i++)
         {

@@ -32,7 +32,7 @@ public sealed class BvhInfoCommand : ICommand
         stdout.WriteLine($"file: {Path.GetFileName(path)}");
         stdout.WriteLine($"frames: {clip.FrameCount}");
         stdout.WriteLine(string.Create(inv, $"rate: {clip.FrameRate:0.###} Hz (frame time {clip.FrameTime:0.######} s), duration {clip.FrameCount * clip.FrameTime:0.###} s"));
-        stdout.WriteLine($"units: {(unit == 1f ? "metres" : unit == 0.01f ? "centimetres" : "millimetres")} (guessed from the rest skeleton's height)");
+        stdout.WriteLine($"units: {(unit == 1f ? "metres" : unit == 0.01f ? "centimetres" : "millimetres")} (guessed from the longest chain of bones)");
         stdout.WriteLine($"joints: {s.Names.Count(n => !s.IsEndSite(s.IndexOf(n)))} (+{s.Names.Count(n => s.IsEndSite(s.IndexOf(n)))} end sites), channels per frame: {clip.ChannelCount}");
         for (int j = 0; j < s.JointCount; j++)
         {

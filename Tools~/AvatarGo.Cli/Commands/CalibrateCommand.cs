@@ -35,7 +35,7 @@ public sealed class CalibrateCommand : ICommand
 
         using SessionReader reader = SessionReader.Open(path);
         HumanoidMap avatar = avatarFile != null
-            ? HumanoidNaming.Detect(BvhReader.ReadFile(avatarFile, new BvhReadOptions { ToMetres = true }).Skeleton)
+            ? AvatarFrom(avatarFile)
             : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no wearer skeleton; give --avatar FILE");
         var calibrator = new Calibrator(reader.Header.Devices, avatar);
         SessionFrame frame = reader.CreateFrame();
@@ -88,9 +88,29 @@ public sealed class CalibrateCommand : ICommand
         }
         if (ok && save != null)
         {
-            CalibrationProfileStore.Save(calibrator.Profile, save);
+            try
+            {
+                CalibrationProfileStore.Save(calibrator.Profile, save); // atomic: a failure leaves an older PROFILE as it was
+            }
+            catch (ArgumentException e)
+            {
+                stderr.WriteLine($"avatargo calibrate: the profile was not saved: {e.Message.Split(" (Parameter '")[0]}");
+                return 1;
+            }
             if (!json) stdout.WriteLine($"profile saved to {save}");
         }
         return ok ? 0 : 1;
+    }
+
+    /// <summary>
+    /// The humanoid avatar of a BVH file (its rest pose, in metres), or a one-line <see cref="FormatException"/>
+    /// naming the file when it cannot be one (a skeleton without the required humanoid bones).
+    /// </summary>
+    internal static HumanoidMap AvatarFrom(string file)
+    {
+        HumanoidMap map = HumanoidNaming.Detect(BvhReader.ReadFile(file, new BvhReadOptions { ToMetres = true }).Skeleton);
+        var missing = map.MissingRequired();
+        if (missing.Count > 0) throw new FormatException($"{Path.GetFileName(file)}: not a humanoid avatar: its skeleton lacks {string.Join(", ", missing)}");
+        return map;
     }
 }

@@ -34,13 +34,21 @@ public sealed class DemoCommand : ICommand
         a.ThrowOnUnknown(0);
 
         BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
-        var simulator = new SessionSimulator(clip, options);
+        SessionSimulator simulator;
+        try
+        {
+            simulator = new SessionSimulator(clip, options);
+        }
+        catch (ArgumentException e)
+        {
+            stderr.WriteLine($"avatargo demo: {Path.GetFileName(bvh)} cannot be simulated: {e.Message.Split(" (Parameter '")[0]}");
+            return 1;
+        }
         string session = Path.Combine(Path.GetTempPath(), $"avatargo-demo-{Environment.ProcessId}.agsession");
         try
         {
             var progress = new ProgressBar(stderr);
-            using (var writer = SessionWriter.Create(session, simulator.CreateHeader()))
-                simulator.Run(writer, p => progress.Report("simulating", p / 3));
+            if (!SimulateCommand.WriteSession(simulator, session, stderr, "demo", p => progress.Report("simulating", p / 3))) return 1;
 
             var solved = new List<RigidPose[]>();
             EvaluationReport exact, fixedOffsets;

@@ -16,6 +16,7 @@ public sealed class EvaluateCommand : ICommand
     public string Help => """
         avatargo evaluate SESSION [--mode exact|fixed] [--avatar FILE] [--leg-scale S] [--arm-scale S]
                          [--controller NAME|none] [--grip hold|open|point|input] [--hands palm|calibrated] [--json OUT]
+                         [--knee-hint MODEL] [--elbow-hint MODEL] [--positions OUT.csv] [--bvh-out OUT.bvh] [--plot OUT.png]
 
         Replays SESSION through the whole pipeline (SelfAvatarPipeline: T-pose identification, scaling,
         walk-in offsets, body IK, hands on the controllers, finger IK) and compares the avatar (the
@@ -44,6 +45,13 @@ public sealed class EvaluateCommand : ICommand
           --leg-scale S        make the avatar's legs S times as long (default 1)
           --arm-scale S        make the avatar's arms S times as long (default 1)
           --json OUT           also write the figures as JSON to OUT
+          --knee-hint MODEL    how the knees' bend direction is chosen: pelvis-foot (default), pelvis, foot, toes,
+                               ankle-hinge, calibration (Documentation~/solver.md compares them)
+          --elbow-hint MODEL   how the elbows' bend direction is chosen: hand-axis (default), down-out-back, calibration
+        """ + EvaluationOutputs.Help + """
+        Knees and elbows: the bend-plane angle error (wearer's vs avatar's bend direction about the limb's axis),
+        median / p95 / max in degrees and the share of frames beyond 90 deg ("flipped"), frames in which the
+        wearer's limb bends at least 15 deg.
         Exit codes: 0 ok, 1 unreadable session or calibration failed, 2 bad arguments.
         """;
 
@@ -57,16 +65,17 @@ public sealed class EvaluateCommand : ICommand
         float legScale = (float)a.Double("leg-scale", 1), armScale = (float)a.Double("arm-scale", 1);
         PipelineSettings settings = Settings(a, mode);
         DisturbanceOptions disturbance = Disturbance(a);
+        EvaluationOutputs outputs = EvaluationOutputs.FromArgs(a);
         a.ThrowOnUnknown(1);
         if (!(legScale > 0.5f && legScale < 2f) || !(armScale > 0.5f && armScale < 2f)) throw new UsageException("limb scales must be between 0.5 and 2");
         EvaluationReport report;
         using (SessionReader reader = SessionReader.Open(path))
         {
             HumanoidMap avatar = avatarFile != null
-                ? HumanoidNaming.Detect(BvhReader.ReadFile(avatarFile, new BvhReadOptions { ToMetres = true }).Skeleton)
+                ? CalibrateCommand.AvatarFrom(avatarFile)
                 : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no ground-truth skeleton; give --avatar FILE");
             if (legScale != 1f || armScale != 1f) avatar = Proportions.ScaleLimbs(avatar, legScale, armScale);
-            report = SessionEvaluator.Evaluate(reader, settings, avatar, null, disturbance);
+            report = outputs.Evaluate(reader, settings, avatar, disturbance);
         }
         if (report.Profile == null)
         {
@@ -74,7 +83,8 @@ public sealed class EvaluateCommand : ICommand
             return 1;
         }
         Print(report, stdout);
-        if (json != null) File.WriteAllText(json, ToJson(report));
+        if (json != null) AtomicFileWriter.WriteAllText(json, ToJson(report)); // whole or not at all: a failure leaves an older OUT as it was
+        outputs.Write(stdout);
         return 0;
     }
 
@@ -97,6 +107,7 @@ public sealed class EvaluateCommand : ICommand
             "calibrated" => HandPlacement.CalibratedOffset,
             string other => throw new UsageException($"--hands must be palm or calibrated, got '{other}'"),
         };
+        SetHintModels(a, settings);
         foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
         {
             settings.Hand(side).Controller = controller;
@@ -128,6 +139,28 @@ public sealed class EvaluateCommand : ICommand
         return d.IsActive ? d : null;
     }
 
+    // --knee-hint / --elbow-hint: the swivel models (Documentation~/solver.md compares them).
+    private static void SetHintModels(ArgReader a, PipelineSettings settings)
+    {
+        settings.KneeHints = a.String("knee-hint", "pelvis-foot") switch
+        {
+            "pelvis-foot" => KneeHintModel.PelvisAndFoot,
+            "pelvis" => KneeHintModel.Pelvis,
+            "foot" => KneeHintModel.Foot,
+            "toes" => KneeHintModel.Toes,
+            "ankle-hinge" => KneeHintModel.AnkleHinge,
+            "calibration" => KneeHintModel.CalibrationFrame,
+            string other => throw new UsageException($"--knee-hint must be pelvis-foot, pelvis, foot, toes, ankle-hinge or calibration, got '{other}'"),
+        };
+        settings.ElbowHints = a.String("elbow-hint", "hand-axis") switch
+        {
+            "hand-axis" => ElbowHintModel.HandAxis,
+            "down-out-back" => ElbowHintModel.DownOutBack,
+            "calibration" => ElbowHintModel.CalibrationFrame,
+            string other => throw new UsageException($"--elbow-hint must be hand-axis, down-out-back or calibration, got '{other}'"),
+        };
+    }
+
     internal static OffsetMode ParseMode(string mode) => mode switch
     {
         "exact" => OffsetMode.Exact,
@@ -155,11 +188,37 @@ public sealed class EvaluateCommand : ICommand
             Row(o, "  after recovery (mm)", d.AfterRecoveryMm);
             Row(o, "  undisturbed (mm)", d.UndisturbedMm);
         }
+        PrintBendPlanes(r, o);
         if (r.Fingers == null) return;
         o.WriteLine(string.Create(inv, $"fingers on the solved body ({r.Fingers.Frames} frames, {r.Fingers.OpenHandFrames} hand-frames open): deepest penetration {r.Fingers.MaxPenetrationMm:0.00} mm"));
         foreach (Finger f in Enum.GetValues<Finger>())
             if (r.Fingers.Gap(f).Count > 0) Row(o, $"  {f} tip gap (mm)", r.Fingers.Gap(f));
     }
+
+    // Knees and elbows bent the wrong way: the bend-plane angle error per joint.
+    internal static void PrintBendPlanes(EvaluationReport r, TextWriter o)
+    {
+        var inv = CultureInfo.InvariantCulture;
+        o.WriteLine(string.Create(inv, $"bend plane (deg)       median      p95      max  flipped (>{BendPlaneReport.FlippedDegrees:0} deg)  signed median  straight frames"));
+        foreach (BendPlaneReport b in r.BendPlanes)
+            o.WriteLine(string.Create(inv,
+                $"  {b.Joint,-18} {b.AbsoluteDegrees.Median,8:0.0} {b.AbsoluteDegrees.P95,8:0.0} {b.AbsoluteDegrees.Max,8:0.0}  {b.FlippedShare * 100,8:0.00} %      {b.SignedDegrees.Median,8:0.0}  {b.StraightFrames,8}"));
+    }
+
+    internal static object BendPlanesJson(EvaluationReport r) => r.BendPlanes.ToDictionary(b => b.Joint.ToString(), b => new
+    {
+        median_deg = OrNull(b.AbsoluteDegrees.Median),
+        p95_deg = OrNull(b.AbsoluteDegrees.P95),
+        max_deg = OrNull(b.AbsoluteDegrees.Max),
+        signed_median_deg = OrNull(b.SignedDegrees.Median),
+        flipped_share = b.FlippedShare,
+        flipped_frames = b.FlippedFrames,
+        frames = b.AbsoluteDegrees.Count,
+        straight_frames = b.StraightFrames,
+    });
+
+    // JSON has no NaN: a statistic of no frames is null.
+    private static double? OrNull(double v) => double.IsNaN(v) ? null : v;
 
     private static void Row(TextWriter o, string name, ErrorSeries s) =>
         o.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{name,-20} {s.Median,8:0.0} {s.Mean,8:0.0} {s.P95,8:0.0} {s.Max,8:0.0}"));
@@ -194,6 +253,7 @@ public sealed class EvaluateCommand : ICommand
                 after_recovery_mm = Stats(r.Disturbance.AfterRecoveryMm),
                 undisturbed_mm = Stats(r.Disturbance.UndisturbedMm),
             },
+            bend_plane = BendPlanesJson(r),
             fingers = r.Fingers == null ? null : new
             {
                 frames = r.Fingers.Frames,

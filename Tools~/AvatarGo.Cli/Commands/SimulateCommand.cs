@@ -39,11 +39,60 @@ public sealed class SimulateCommand : ICommand
         var options = Options(a);
         a.ThrowOnUnknown(0);
         BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
-        var simulator = new SessionSimulator(clip, options);
-        using (var writer = SessionWriter.Create(output, simulator.CreateHeader()))
-            simulator.Run(writer);
+        SessionSimulator simulator;
+        try
+        {
+            simulator = new SessionSimulator(clip, options);
+        }
+        catch (ArgumentException e)
+        {
+            stderr.WriteLine($"avatargo simulate: {Path.GetFileName(bvh)} cannot be simulated: {FirstLine(e)}");
+            return 1;
+        }
+        if (!WriteSession(simulator, output, stderr, "simulate")) return 1;
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"wrote {output}: {simulator.FrameCount} frames at {options.Rate:0.##} Hz"));
         return 0;
+    }
+
+    /// <summary>
+    /// Simulates into a session file, whole or not at all: the file appears only when the session is complete, and a
+    /// failure (a skeleton the format cannot hold, an exception mid-way) leaves a file already at the path untouched.
+    /// False (with the reason on stderr) when the clip's skeleton cannot be written as a session.
+    /// </summary>
+    internal static bool WriteSession(SessionSimulator simulator, string path, TextWriter stderr, string command, Action<float> progress = null)
+    {
+        SessionWriter writer;
+        try
+        {
+            writer = SessionWriter.Create(path, simulator.CreateHeader());
+        }
+        catch (ArgumentException e)
+        {
+            stderr.WriteLine($"avatargo {command}: the session cannot hold this clip's skeleton: {FirstLine(e)} ({path} was not written)");
+            return false;
+        }
+        using (writer)
+        {
+            try
+            {
+                simulator.Run(writer, progress);
+                writer.Complete();
+            }
+            catch
+            {
+                writer.Discard();
+                throw;
+            }
+        }
+        return true;
+    }
+
+    // The message of an ArgumentException without its "(Parameter 'x')" line.
+    private static string FirstLine(ArgumentException e)
+    {
+        string m = e.Message;
+        int parameter = m.IndexOf(" (Parameter '", StringComparison.Ordinal);
+        return (parameter >= 0 ? m.Substring(0, parameter) : m).Split('\n')[0].TrimEnd('\r');
     }
 
     /// <summary>The simulation options shared by simulate and demo.</summary>

@@ -34,15 +34,30 @@ public class SessionAllocationTests
         f.HasTruth[(int)HumanoidBone.Head] = true;
     }
 
+    // The runtime promotes hot methods to optimised code about 100 ms after they stop being new, in the background,
+    // and the first calls after a promotion can allocate once (seen as a single 5 KB allocation at a varying frame
+    // when other tests had just run). Waiting past that, and running the code again, keeps one-off promotions out
+    // of the per-frame measurement.
+    private static void SettleTieredCompilation(Action work)
+    {
+        for (int round = 0; round < 3; round++)
+        {
+            System.Threading.Thread.Sleep(150);
+            work();
+        }
+    }
+
     [Test]
     public void WritingAFrameAllocatesNothing()
     {
         SessionHeader h = Header();
         using var w = new SessionWriter(new StreamWriter(Stream.Null, new UTF8Encoding(false), 1 << 16), h, ownsWriter: true);
         var f = new SessionFrame(h);
-        for (int i = 0; i < 200; i++) { Fill(f, i); w.WriteFrame(f); } // warm up (JIT, buffers)
+        int next = 0;
+        for (; next < 200; next++) { Fill(f, next); w.WriteFrame(f); } // warm up (JIT, buffers)
+        SettleTieredCompilation(() => { for (int end = next + 200; next < end; next++) { Fill(f, next); w.WriteFrame(f); } });
         long before = GC.GetAllocatedBytesForCurrentThread();
-        for (int i = 200; i < 2200; i++) { Fill(f, i); w.WriteFrame(f); }
+        for (int end = next + 2000; next < end; next++) { Fill(f, next); w.WriteFrame(f); }
         long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
         Assert.That(bytes, Is.EqualTo(0), $"{bytes / 2000.0:0.#} bytes per written frame");
     }
@@ -60,11 +75,12 @@ public class SessionAllocationTests
         using var r = new SessionReader(new StringReader(text.ToString()), "alloc");
         SessionFrame g = r.CreateFrame();
         for (int i = 0; i < 200; i++) Assert.That(r.ReadFrame(g), Is.True);
+        SettleTieredCompilation(() => { for (int i = 0; i < 200; i++) r.ReadFrame(g); });
         long before = GC.GetAllocatedBytesForCurrentThread();
         int n = 0;
         while (r.ReadFrame(g)) n++;
         long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
-        Assert.That(n, Is.EqualTo(2800));
-        Assert.That(bytes, Is.EqualTo(0), $"{bytes / 2800.0:0.#} bytes per read frame");
+        Assert.That(n, Is.EqualTo(2200));
+        Assert.That(bytes, Is.EqualTo(0), $"{bytes / 2200.0:0.#} bytes per read frame");
     }
 }

@@ -1,0 +1,86 @@
+using System.Collections.Generic;
+using System.Numerics;
+using NUnit.Framework;
+using AvatarGo.Simulation;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// The canonical T-pose from anatomy and landmarks (issue 10): the same joint positions whatever the rest pose and the
+    /// bones' local axes, and the landmarks where the T-pose says (hip line level, feet flat toward the toes on the floor,
+    /// arms out, palms down with the thumbs forward, spine up).
+    /// </summary>
+    public class TPoserTests
+    {
+        private static IEnumerable<TestCaseData> Clips()
+        {
+            foreach (string clip in new[] { "mocapbank_30fps.bvh", "mixamo_fingers_30fps.bvh", "rigify_6channel_24fps_first240.bvh" })
+                yield return new TestCaseData(clip).SetName($"TPose {clip}");
+        }
+
+        private static (HumanoidMap map, SkeletonPose pose) TPose(BvhClip clip, RigidPose placement)
+        {
+            HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
+            var pose = new SkeletonPose(clip.Skeleton);
+            TPoser.Apply(map, pose, placement);
+            return (map, pose);
+        }
+
+        [TestCaseSource(nameof(Clips))]
+        public void EveryHumanoidJointIsWhereItIsWhateverTheRestAndTheLocalAxes(string file)
+        {
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap(file), new BvhReadOptions { ToMetres = true });
+            var placement = new RigidPose(new Vector3(0.3f, 0f, -1.2f), Rotations.AngleAxis(130f, Vector3.UnitY));
+            var (map, reference) = TPose(clip, placement);
+            var others = new[] { BvhRebaser.AlongX(clip), BvhRebaser.AlongX(clip, 37f), BvhRebaser.RandomAxes(clip, 1), BvhRebaser.RandomAxes(clip, 2), BvhRebaser.RandomAxes(clip, 3) };
+            foreach (BvhClip other in others)
+            {
+                var (otherMap, pose) = TPose(other, placement);
+                for (int b = 0; b < HumanoidBones.Count; b++)
+                {
+                    var bone = (HumanoidBone)b;
+                    if (!map.Has(bone)) continue;
+                    Approx.Near(reference.World[map[bone]].Position, pose.World[otherMap[bone]].Position, 1e-5f, $"{file} {bone}");
+                }
+                Assert.That(TPoser.EyePosition(otherMap, pose, placement.Rotation).Y, Is.EqualTo(TPoser.EyePosition(map, reference, placement.Rotation).Y).Within(1e-5f), "eye height (the scale)");
+            }
+        }
+
+        [TestCaseSource(nameof(Clips))]
+        public void TheLandmarksAreWhereTheTPoseSays(string file)
+        {
+            // A random rest convention, so nothing of the file's own rest can help.
+            BvhClip clip = BvhRebaser.RandomAxes(BvhReader.ReadFile(TestData.Mocap(file), new BvhReadOptions { ToMetres = true }), 11);
+            var (map, pose) = TPose(clip, RigidPose.Identity);
+            Vector3 At(HumanoidBone b) => pose.World[map[b]].Position;
+            Vector3 hipLine = At(HumanoidBone.RightUpperLeg) - At(HumanoidBone.LeftUpperLeg);
+            Assert.That(Vectors.AngleDegrees(hipLine, Vector3.UnitX), Is.LessThan(0.01f), "hip line level along +X");
+            Assert.That(Vectors.AngleDegrees(At(HumanoidBone.Head) - At(HumanoidBone.Spine), Vector3.UnitY), Is.LessThan(0.01f), "spine straight up");
+            float lowest = float.MaxValue;
+            for (int j = 0; j < pose.World.Length; j++) lowest = System.Math.Min(lowest, pose.World[j].Position.Y);
+            Assert.That(lowest, Is.EqualTo(0f).Within(1e-5f), "standing on the floor");
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+            {
+                Vector3 outward = side == BodySide.Left ? -Vector3.UnitX : Vector3.UnitX;
+                HumanoidBone Bone(HumanoidBone left) => HumanoidBones.OnSide(left, side);
+                Assert.That(Vectors.AngleDegrees(At(Bone(HumanoidBone.LeftUpperArm)) - At(Bone(HumanoidBone.LeftShoulder)), outward), Is.LessThan(0.01f), $"{side} clavicle out");
+                Assert.That(Vectors.AngleDegrees(At(Bone(HumanoidBone.LeftHand)) - At(Bone(HumanoidBone.LeftUpperArm)), outward), Is.LessThan(0.01f), $"{side} arm out");
+                Assert.That(Vectors.AngleDegrees(At(Bone(HumanoidBone.LeftFoot)) - At(Bone(HumanoidBone.LeftUpperLeg)), -Vector3.UnitY), Is.LessThan(0.01f), $"{side} leg down");
+                // Feet toward the toes: straight ahead, the toes on the floor with the ankle at its anatomical height.
+                Vector3 ankle = At(Bone(HumanoidBone.LeftFoot)), toe = pose.World[TPoser.ToeLandmark(map, side)].Position;
+                Assert.That(Vectors.AngleDegrees(Vectors.ProjectOnPlane(toe - ankle, Vector3.UnitY), Vector3.UnitZ), Is.LessThan(0.01f), $"{side} toes forward");
+                float leg = Vector3.Distance(At(Bone(HumanoidBone.LeftUpperLeg)), At(Bone(HumanoidBone.LeftLowerLeg))) + Vector3.Distance(At(Bone(HumanoidBone.LeftLowerLeg)), ankle);
+                Assert.That(toe.Y, Is.LessThan(0.01f * leg), $"{side} toes on the floor (the longer leg's exactly)");
+                Assert.That(ankle.Y - toe.Y, Is.EqualTo(TPoser.AnkleHeightOfLeg * leg).Within(5e-4f), $"{side} ankle its anatomical height above the toes");
+                if (!HandModel.CanModel(map, side, out _)) continue;
+                // Palms down, thumbs forward: from the finger bases alone.
+                var hand = new HandModel(map, side, pose);
+                RigidPose wrist = pose.World[map[Bone(HumanoidBone.LeftHand)]];
+                Assert.That(Vectors.AngleDegrees(wrist.TransformDirection(hand.PalmNormalInHand), -Vector3.UnitY), Is.LessThan(0.01f), $"{side} palm down");
+                Vector3 across = Vectors.ProjectOnPlane(wrist.TransformDirection(hand.AcrossInHand), wrist.TransformDirection(hand.AlongInHand));
+                Assert.That(Vectors.AngleDegrees(across, Vector3.UnitZ), Is.LessThan(0.01f), $"{side} little-to-index forward");
+                Assert.That(Vectors.AngleDegrees(wrist.TransformDirection(hand.AlongInHand), outward), Is.LessThan(0.01f), $"{side} hand out");
+            }
+        }
+    }
+}

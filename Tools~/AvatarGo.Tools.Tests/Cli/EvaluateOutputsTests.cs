@@ -1,0 +1,113 @@
+using System;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Text.Json;
+using AvatarGo.Core;
+using NUnit.Framework;
+
+namespace AvatarGo.Tools.Tests;
+
+/// <summary>Issue 10: `bvh rebase` and what `evaluate` writes for people to look at (--positions, --bvh-out, --plot).</summary>
+public class EvaluateOutputsTests
+{
+    private static string Temp(string extension) => Path.Combine(Path.GetTempPath(), "avatargo-" + Guid.NewGuid().ToString("N") + extension);
+
+    [TestCase("x-along", "0", "1")]
+    [TestCase("x-along", "37", "1")]
+    [TestCase("random", "0", "4")]
+    public void RebaseKeepsEveryJointWhereItWasInEveryFrame(string rest, string twist, string seed)
+    {
+        string input = Paths.Mocap("mocapbank_30fps.bvh"), output = Temp(".bvh");
+        try
+        {
+            var args = rest == "random" ? new[] { "bvh", "rebase", input, output, "--rest", rest, "--seed", seed } : new[] { "bvh", "rebase", input, output, "--rest", rest, "--twist", twist };
+            var r = CliRunner.Run(args);
+            Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
+            double[][] a = Positions(input), b = Positions(output);
+            Assert.That(b.Length, Is.EqualTo(a.Length));
+            double worst = 0;
+            for (int f = 0; f < a.Length; f++)
+                for (int i = 0; i < a[f].Length; i += 3)
+                    worst = Math.Max(worst, Math.Sqrt(Sq(a[f][i] - b[f][i]) + Sq(a[f][i + 1] - b[f][i + 1]) + Sq(a[f][i + 2] - b[f][i + 2])));
+            Assert.That(worst * 10, Is.LessThanOrEqualTo(0.01), "largest joint displacement (mm; the file is in centimetres)");
+            Assert.That(File.ReadAllText(output), Does.Not.Contain(File.ReadAllLines(input)[3].Trim()), "the OFFSETs changed");
+        }
+        finally { File.Delete(output); }
+    }
+
+    [Test]
+    public void RebaseRejectsAnUnknownConvention()
+    {
+        Assert.That(CliRunner.Run("bvh", "rebase", Paths.Mocap("mocapbank_30fps.bvh"), Temp(".bvh"), "--rest", "a-pose").ExitCode, Is.EqualTo(2));
+        Assert.That(CliRunner.Run("bvh", "rebase", Paths.Mocap("mocapbank_30fps.bvh"), Temp(".bvh")).ExitCode, Is.EqualTo(2));
+    }
+
+    [Test]
+    public void ThePositionsCsvAgreesWithTheEvaluatorsMpjpeAndTheBvhAndPlotAreWritten()
+    {
+        string session = Temp(".agsession"), csv = Temp(".csv"), json = Temp(".json"), bvh = Temp(".bvh"), png = Temp(".png");
+        try
+        {
+            Assert.That(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mixamo_fingers_30fps.bvh"), "--out", session, "--seed", "3").ExitCode, Is.EqualTo(0));
+            var r = CliRunner.Run("evaluate", session, "--positions", csv, "--json", json, "--bvh-out", bvh, "--plot", png);
+            Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
+            using var doc = JsonDocument.Parse(File.ReadAllText(json));
+            double mpjpe = doc.RootElement.GetProperty("mpjpe_mm").GetDouble();
+            int frames = doc.RootElement.GetProperty("frames").GetInt32();
+
+            string[] lines = File.ReadAllLines(csv);
+            string[] header = lines[0].Split(',');
+            Assert.That(header[0], Is.EqualTo("frame"));
+            Assert.That(header[1], Is.EqualTo("time"));
+            Assert.That(header.Skip(2).Take(6), Is.EqualTo(new[] { "Hips.solved.x", "Hips.solved.y", "Hips.solved.z", "Hips.truth.x", "Hips.truth.y", "Hips.truth.z" }));
+            Assert.That(lines.Length - 1, Is.EqualTo(frames), "one row per compared frame");
+            // MPJPE over the joints the evaluator compares (every humanoid joint but the fingers).
+            double sum = 0;
+            int count = 0;
+            for (int row = 1; row < lines.Length; row++)
+            {
+                double[] v = lines[row].Split(',').Select(s => double.Parse(s, CultureInfo.InvariantCulture)).ToArray();
+                for (int c = 2; c < header.Length; c += 6)
+                {
+                    var bone = Enum.Parse<HumanoidBone>(header[c].Split('.')[0]);
+                    if (HumanoidBones.IsFinger(bone)) continue;
+                    sum += Math.Sqrt(Sq(v[c] - v[c + 3]) + Sq(v[c + 1] - v[c + 4]) + Sq(v[c + 2] - v[c + 5])) * 1000;
+                    count++;
+                }
+            }
+            Assert.That(sum / count, Is.EqualTo(mpjpe).Within(0.01), "MPJPE from the CSV vs the evaluator's (mm)");
+            Assert.That(header.Any(h => h.StartsWith("LeftIndexDistal.solved", StringComparison.Ordinal)), Is.True, "finger joints are written too");
+
+            BvhClip solved = BvhReader.ReadFile(bvh, new BvhReadOptions { Scale = 0.01f });
+            Assert.That(solved.FrameCount, Is.EqualTo(frames));
+            Assert.That(HumanoidNaming.Detect(solved.Skeleton).IsComplete, Is.True);
+
+            byte[] image = File.ReadAllBytes(png);
+            Assert.That(image.Take(8), Is.EqualTo(new byte[] { 0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A }), "a PNG");
+            Assert.That(image.Length, Is.GreaterThan(20_000), "with something drawn in it");
+
+            var bend = doc.RootElement.GetProperty("bend_plane");
+            foreach (string joint in new[] { "LeftLowerLeg", "RightLowerLeg", "LeftLowerArm", "RightLowerArm" })
+            {
+                var b = bend.GetProperty(joint);
+                Assert.That(b.GetProperty("frames").GetInt32() + b.GetProperty("straight_frames").GetInt32(), Is.EqualTo(frames), joint);
+                Assert.That(b.GetProperty("flipped_share").GetDouble(), Is.InRange(0.0, 1.0), joint);
+            }
+            StringAssert.Contains("bend plane (deg)", r.Stdout);
+        }
+        finally
+        {
+            foreach (string f in new[] { session, csv, json, bvh, png }) File.Delete(f);
+        }
+    }
+
+    private static double Sq(double v) => v * v;
+
+    private static double[][] Positions(string bvh)
+    {
+        var r = CliRunner.Run("bvh", "positions", bvh);
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
+        return r.Stdout.TrimEnd().Split('\n').Skip(1).Select(l => l.Split(',').Skip(1).Select(s => double.Parse(s, CultureInfo.InvariantCulture)).ToArray()).ToArray();
+    }
+}
