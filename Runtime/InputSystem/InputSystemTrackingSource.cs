@@ -140,6 +140,23 @@ namespace AvatarGo
             frame.Clear();
             frame.Time = Time.timeAsDouble;
             if (_actions[0] == null || frame.Samples.Length < BodyRoles.Count) return; // disabled: every device lost
+            try
+            {
+                ReadActions(frame);
+            }
+            catch (System.InvalidOperationException e)
+            {
+                // An action bound to a control of another type (ReadValue<Vector3> on an axis): a setup error, logged once.
+                frame.Clear();
+                frame.Time = Time.timeAsDouble;
+                Debug.LogError("AvatarGo: the Input System Tracking Source cannot read its actions (" + e.Message +
+                               "): check that each is bound to a control of its type (Vector3, Quaternion, Integer, Axis). The component is disabled.", this);
+                enabled = false;
+            }
+        }
+
+        private void ReadActions(SessionFrame frame)
+        {
             for (int d = 0; d < BodyRoles.Count; d++)
             {
                 InputAction position = _actions[3 * d], rotation = _actions[3 * d + 1], state = _actions[3 * d + 2];

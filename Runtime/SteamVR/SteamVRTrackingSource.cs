@@ -61,12 +61,21 @@ namespace AvatarGo
         }
 
         // The actions are looked up once SteamVR's input is initialized (before, SteamVR_Input only makes placeholders).
-        private void ResolveActions()
+        // A pose action the project's actions lack is a setup error: logged once, and the source disables itself.
+        private bool ResolveActions()
         {
             _pose = SteamVR_Input.GetPoseActionFromPath(m_PoseAction);
+            if (_pose == null)
+            {
+                Debug.LogError("AvatarGo: the SteamVR Tracking Source found no pose action '" + m_PoseAction +
+                               "' in the project's SteamVR actions (Window > SteamVR Input); it is disabled.", this);
+                enabled = false;
+                return false;
+            }
             _trigger = string.IsNullOrEmpty(m_TriggerAction) ? null : SteamVR_Input.GetSingleActionFromPath(m_TriggerAction);
             _triggerButton = string.IsNullOrEmpty(m_TriggerButtonAction) ? null : SteamVR_Input.GetBooleanActionFromPath(m_TriggerButtonAction);
             _grip = string.IsNullOrEmpty(m_GripAction) ? null : SteamVR_Input.GetBooleanActionFromPath(m_GripAction);
+            return true;
         }
 
         private void OnDisable()
@@ -87,7 +96,7 @@ namespace AvatarGo
             if (frame.Samples.Length < BodyRoles.Count || !isActiveAndEnabled) return;
             if (m_Head != null) frame.Samples[0] = new DeviceSample(ToTrackingSpace(m_Head), true);
             if (!SteamVR_Input.initialized) return; // before SteamVR starts: only the head transform
-            if (_pose == null) ResolveActions();
+            if (_pose == null && !ResolveActions()) return;
             for (int d = m_Head != null ? 1 : 0; d < BodyRoles.Count; d++)
             {
                 SteamVR_Input_Sources source = Source(BodyRoles.All[d]);
