@@ -1,9 +1,8 @@
 using System;
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.IO;
 using System.Linq;
-using System.Text.RegularExpressions;
+using Microsoft.CodeAnalysis;
 
 namespace AvatarGo.UnityGate;
 
@@ -20,14 +19,39 @@ public sealed record GateDiagnostic(string Configuration, string Assembly, strin
     public override string ToString() => $"[{Configuration}] {Assembly}: {File}({Line}): {Code}: {Message}";
 }
 
-/// <summary>The outcome of building generated projects.</summary>
-/// <param name="ExitCode">dotnet build's exit code.</param>
+/// <summary>How a gate build compiles the planned assemblies.</summary>
+public enum GateCompiler
+{
+    /// <summary>In this process, with Roslyn, from the same plan and settings as the generated projects (the default).</summary>
+    Roslyn,
+
+    /// <summary>The generated projects, built by the .NET SDK's MSBuild (dotnet build gate.slnx).</summary>
+    MSBuild,
+}
+
+/// <summary>The outcome of a gate build.</summary>
+/// <param name="ExitCode">dotnet build's exit code; for the in-process compiler 1 when there is an error, else 0.</param>
 /// <param name="Errors">Every distinct error.</param>
-/// <param name="Output">MSBuild's console output, for messages when something unexpected happened.</param>
-/// <param name="Seconds">Wall-clock time of the build.</param>
-/// <param name="CpuSeconds">Processor time of dotnet build and every process it waited for (MSBuild nodes, csc).</param>
+/// <param name="Output">MSBuild's console output, or the in-process compiler's log of each compilation.</param>
+/// <param name="Seconds">Wall-clock time of the compile (projects written and plans made before it are not counted).</param>
+/// <param name="CpuSeconds">
+/// Processor time: of dotnet build and every process it waited for (MSBuild nodes, csc), or of this whole process
+/// while it compiled in-process.
+/// </param>
 public sealed record GateResult(int ExitCode, IReadOnlyList<GateDiagnostic> Errors, string Output, double Seconds, double CpuSeconds)
 {
+    /// <summary>Which compiler built it.</summary>
+    public GateCompiler Compiler { get; init; }
+
+    /// <summary>The assemblies it built, to reference again (only complete when it succeeded).</summary>
+    public IBuiltAssemblies Built { get; init; }
+
+    /// <summary>
+    /// Compilations not run again because one with the same content key was kept: in memory from earlier in this
+    /// process (in-process compiler), or in the cache folder (MSBuild).
+    /// </summary>
+    public int Reused { get; init; }
+
     /// <summary>The plans that were built.</summary>
     public IReadOnlyList<ConfigurationPlan> Plans { get; init; }
 
@@ -45,32 +69,42 @@ public sealed record GateResult(int ExitCode, IReadOnlyList<GateDiagnostic> Erro
 
     /// <summary>A readable summary for assertion messages.</summary>
     public string Describe() =>
-        $"exit {ExitCode}, {Errors.Count} error(s) in {Seconds:0.0} s ({CpuSeconds:0.0} s of processor time)" + (Errors.Count > 0 ? ":\n  " + string.Join("\n  ", Errors) : "") +
+        $"{Compiler}: exit {ExitCode}, {Errors.Count} error(s), {Projects?.Graph.Assemblies.Count} compilation(s) ({Reused} reused) in {Seconds:0.0} s ({CpuSeconds:0.0} s of processor time)" + (Errors.Count > 0 ? ":\n  " + string.Join("\n  ", Errors) : "") +
         (ExitCode != 0 && Errors.Count == 0 ? "\n--- output ---\n" + Output : "");
 }
 
-/// <summary>Plans, writes and builds configurations with the .NET SDK's MSBuild.</summary>
+/// <summary>The assemblies a gate build produced, as references for another compilation against them.</summary>
+public interface IBuiltAssemblies
+{
+    /// <summary>The built assembly of a compilation.</summary>
+    MetadataReference Reference(GateAssembly assembly);
+}
+
+/// <summary>Plans configurations, writes their MSBuild projects and compiles them, in-process or with MSBuild.</summary>
 public static class GateBuild
 {
-    private static readonly Regex ErrorLine = new(
-        @"^(?:(?<file>[^\s(][^(\r\n]*?)\((?<line>\d+),(?<col>\d+)\)\s*:[ \t]*|(?<tool>[^:\[\r\n]*?)[ \t]*:[ \t]*)?error[ \t]+(?<code>[A-Z]+\d+)[ \t]*:[ \t]*(?<message>[^\r\n]*?)(?:[ \t]+\[(?<project>[^\]\r\n]+)\])?\r?$",
-        RegexOptions.CultureInvariant | RegexOptions.Multiline);
-
     /// <summary>Where the gate writes its projects inside a package: Tools~/out/gate (ignored by git).</summary>
     public static string DefaultOutDir(string packageRoot) => Path.Combine(packageRoot, "Tools~", "out", "gate");
 
     /// <summary>
-    /// Plans the configurations, writes their projects and builds them all in one MSBuild run. With
-    /// <paramref name="onlyAssemblies"/>, only those assemblies and what they reference are built (for quick checks
-    /// of one assembly); otherwise everything each configuration compiles.
+    /// Plans the configurations, writes their projects and compiles them. With <paramref name="onlyAssemblies"/>,
+    /// only those assemblies and what they reference are compiled (for quick checks of one assembly); otherwise
+    /// everything each configuration compiles.
     /// </summary>
+    /// <param name="packageRoot">The package.</param>
+    /// <param name="nugetRoot">The NuGet packages folder (NUnit 3.6.0).</param>
+    /// <param name="configurations">The configurations to compile.</param>
+    /// <param name="outDir">Where the projects go (default <see cref="DefaultOutDir"/>).</param>
+    /// <param name="onlyAssemblies">Optional: the assemblies to compile, with their references.</param>
+    /// <param name="compiler">In-process Roslyn (default) or MSBuild over the generated projects.</param>
+    /// <param name="cacheDir">MSBuild only: a folder of assemblies built before, by content (see <see cref="ProjectWriter.Write"/>).</param>
     public static GateResult Run(string packageRoot, string nugetRoot, IEnumerable<UnityConfiguration> configurations, string outDir = null,
-        IReadOnlyCollection<string> onlyAssemblies = null, string cacheDir = null)
+        IReadOnlyCollection<string> onlyAssemblies = null, GateCompiler compiler = GateCompiler.Roslyn, string cacheDir = null)
     {
         var planner = new Planner(packageRoot, nugetRoot);
         var plans = configurations.Select(planner.Plan).ToList();
         if (onlyAssemblies != null) plans = plans.Select(p => Restrict(p, onlyAssemblies)).ToList();
-        return Build(planner.PackageRoot, plans, outDir ?? DefaultOutDir(planner.PackageRoot), cacheDir);
+        return Build(planner.PackageRoot, plans, outDir ?? DefaultOutDir(planner.PackageRoot), compiler, cacheDir);
     }
 
     /// <summary>The plan cut down to the named assemblies and their references.</summary>
@@ -82,113 +116,25 @@ public static class GateBuild
         return plan with { Assemblies = plan.Assemblies.Where(a => keep.Contains(a.Name)).ToList() };
     }
 
-    /// <summary>Writes the plans' projects and builds them.</summary>
-    public static GateResult Build(string packageRoot, IReadOnlyList<ConfigurationPlan> plans, string outDir, string cacheDir = null)
+    /// <summary>
+    /// Writes the plans' projects and compiles them. The in-process compiler writes the same projects (the cache is
+    /// MSBuild's only), so Tools~/out/gate always holds what was checked, ready for dotnet build or an IDE.
+    /// </summary>
+    public static GateResult Build(string packageRoot, IReadOnlyList<ConfigurationPlan> plans, string outDir,
+        GateCompiler compiler = GateCompiler.Roslyn, string cacheDir = null)
     {
-        ProjectSet projects = ProjectWriter.Write(packageRoot, outDir, plans, cacheDir);
-        string slnx = projects.Solution;
-        var watch = Stopwatch.StartNew();
-        double cpuBefore = ChildProcessorSeconds();
-        var psi = new ProcessStartInfo("dotnet")
+        AssemblyGraph graph = AssemblyGraph.Of(packageRoot, plans);
+        ProjectSet projects = ProjectWriter.Write(packageRoot, outDir, graph, compiler == GateCompiler.MSBuild ? cacheDir : null);
+        GateResult result = compiler == GateCompiler.MSBuild
+            ? MSBuildGate.Build(packageRoot, projects, outDir, cacheDir)
+            : RoslynGate.Build(packageRoot, graph);
+        return result with
         {
-            WorkingDirectory = outDir,
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            UseShellExecute = false,
-        };
-        foreach (string arg in new[] { "build", slnx, "-c", "Release", "-nologo", "-v:q", "-tl:off", "-nodeReuse:false", "-clp:NoSummary" })
-            psi.ArgumentList.Add(arg);
-        psi.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
-        psi.Environment["DOTNET_NOLOGO"] = "1";
-        psi.Environment["MSBUILDDISABLENODEREUSE"] = "1";
-        using Process p = Process.Start(psi) ?? throw new InvalidOperationException("could not start dotnet");
-        var stderr = p.StandardError.ReadToEndAsync();
-        string output = p.StandardOutput.ReadToEnd();
-        p.WaitForExit();
-        output += stderr.Result;
-        watch.Stop();
-        double cpu = ChildProcessorSeconds() - cpuBefore;
-        List<GateDiagnostic> errors = Parse(output, packageRoot, outDir, projects);
-        if (cacheDir != null) Remember(projects, outDir, cacheDir, errors);
-        return new GateResult(p.ExitCode, errors, output, watch.Elapsed.TotalSeconds, cpu)
-        {
+            Compiler = compiler,
             Plans = plans,
             Projects = projects,
             OutDir = outDir,
             PackageRoot = packageRoot,
         };
-    }
-
-    // Every project that built with no error goes into the cache under its content key.
-    private static void Remember(ProjectSet projects, string outDir, string cacheDir, List<GateDiagnostic> errors)
-    {
-        foreach (var (folder, key) in projects.ContentKeys)
-        {
-            if (projects.Cached.ContainsKey(folder)) continue;
-            string assembly = folder.Substring(0, folder.LastIndexOf('.'));
-            if (errors.Any(e => e.Assembly == assembly && projects.Configurations[folder].Any(c => e.Configuration.Split(',').Contains(c)))) continue;
-            string dll = Path.Combine(outDir, folder, "bin", "Release", assembly + ".dll");
-            if (!File.Exists(dll)) continue;
-            string target = Path.Combine(cacheDir, key);
-            Directory.CreateDirectory(target);
-            // Builds running side by side may cache the same assembly: write to a temporary name, then move it in.
-            string temp = Path.Combine(target, $"{assembly}.{Guid.NewGuid():N}.tmp");
-            File.Copy(dll, temp);
-            try
-            {
-                File.Move(temp, Path.Combine(target, assembly + ".dll"), overwrite: false);
-            }
-            catch (IOException)
-            {
-                File.Delete(temp); // another build cached the same bytes first
-            }
-        }
-    }
-
-    /// <summary>
-    /// Processor time of this process's finished children and their waited-for descendants (Linux: cutime + cstime in
-    /// /proc/self/stat); NaN elsewhere. The machine may be shared, so this says more about the gate's cost than wall time.
-    /// </summary>
-    public static double ChildProcessorSeconds()
-    {
-        try
-        {
-            string stat = File.ReadAllText("/proc/self/stat");
-            string[] fields = stat.Substring(stat.LastIndexOf(')') + 2).Split(' ');
-            // After "pid (comm) ", field 3 (state) is index 0, so cutime (16) and cstime (17) are at 13 and 14.
-            return (long.Parse(fields[13]) + long.Parse(fields[14])) / 100.0;
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException or FormatException or IndexOutOfRangeException)
-        {
-            return double.NaN;
-        }
-    }
-
-    /// <summary>The distinct errors in MSBuild console output.</summary>
-    public static List<GateDiagnostic> Parse(string output, string packageRoot, string outDir, ProjectSet projects)
-    {
-        var errors = new List<GateDiagnostic>();
-        string root = Path.GetFullPath(packageRoot).TrimEnd('/') + "/";
-        string outRoot = Path.GetFullPath(outDir).TrimEnd('/') + "/";
-        foreach (Match m in ErrorLine.Matches(output))
-        {
-            string project = m.Groups["project"].Value;
-            string configuration = "", assembly = "";
-            if (project.StartsWith(outRoot, StringComparison.Ordinal))
-            {
-                string[] parts = project.Substring(outRoot.Length).Split('/');
-                if (parts.Length >= 2)
-                {
-                    assembly = parts[0].Contains('.') ? parts[0].Substring(0, parts[0].LastIndexOf('.')) : parts[0];
-                    if (projects.Configurations.TryGetValue(parts[0], out IReadOnlyList<string> configs)) configuration = string.Join(",", configs);
-                }
-            }
-            string file = m.Groups["file"].Success ? m.Groups["file"].Value.Trim() : m.Groups["tool"].Value.Trim();
-            if (file.StartsWith(root, StringComparison.Ordinal)) file = file.Substring(root.Length);
-            int line = m.Groups["line"].Success ? int.Parse(m.Groups["line"].Value) : 0;
-            var d = new GateDiagnostic(configuration, assembly, file, line, m.Groups["code"].Value, m.Groups["message"].Value.Trim());
-            if (!errors.Contains(d)) errors.Add(d);
-        }
-        return errors;
     }
 }

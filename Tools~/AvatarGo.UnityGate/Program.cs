@@ -7,8 +7,9 @@ using System.Reflection;
 namespace AvatarGo.UnityGate;
 
 /// <summary>
-/// avatargo-gate: generate (write the projects), build (write and build them), plan (print what each configuration
-/// compiles), verify-surface (check the surface against a UnityCsReference checkout).
+/// avatargo-gate: generate (write the projects), build (write them and compile the same plan in-process, or build them
+/// with MSBuild with --msbuild), plan (print what each configuration compiles), verify-surface (check the surface
+/// against a UnityCsReference checkout).
 /// </summary>
 public static class Program
 {
@@ -59,13 +60,16 @@ public static class Program
             case "generate":
             {
                 var planner = new Planner(package, NuGetPackageRoot);
-                string slnx = ProjectWriter.Write(planner.PackageRoot, outDir, configs.Select(planner.Plan).ToList()).Solution;
+                AssemblyGraph graph = AssemblyGraph.Of(planner.PackageRoot, configs.Select(planner.Plan).ToList());
+                string slnx = ProjectWriter.Write(planner.PackageRoot, outDir, graph).Solution;
                 stdout.WriteLine($"wrote {slnx}");
                 return 0;
             }
             case "build":
             {
-                GateResult result = GateBuild.Run(package, NuGetPackageRoot, configs, outDir);
+                GateCompiler compiler = args.Contains("--msbuild") ? GateCompiler.MSBuild : GateCompiler.Roslyn;
+                GateResult result = GateBuild.Run(package, NuGetPackageRoot, configs, outDir, compiler: compiler);
+                if (compiler == GateCompiler.Roslyn) stdout.Write(result.Output); // one line per compilation
                 stdout.WriteLine(result.Describe());
                 return result.Succeeded ? 0 : 1;
             }
@@ -84,7 +88,8 @@ public static class Program
                 return problems.Count == 0 ? 0 : 1;
             }
             default:
-                stdout.WriteLine("usage: avatargo-gate plan|generate|build [--config a,b] [--package DIR] [--out DIR]");
+                stdout.WriteLine("usage: avatargo-gate plan|generate|build [--config a,b] [--package DIR] [--out DIR] [--msbuild]");
+                stdout.WriteLine("       build compiles in-process with Roslyn; --msbuild builds the generated projects with dotnet build instead");
                 stdout.WriteLine("       avatargo-gate verify-surface --unity-cs-reference GITDIR [--source com.unity.test-framework=GITDIR]");
                 stdout.WriteLine("configurations: " + string.Join(", ", UnityConfiguration.Standard.Select(x => x.Name)));
                 return command is "--help" or "-h" ? 0 : 2;

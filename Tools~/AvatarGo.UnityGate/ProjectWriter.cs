@@ -3,56 +3,42 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using System.Security;
-using System.Security.Cryptography;
-using System.Text.RegularExpressions;
 using System.Text;
 
 namespace AvatarGo.UnityGate;
 
 /// <summary>The projects written for a gate build.</summary>
-/// <param name="Solution">The solution over every project (gate.slnx).</param>
-/// <param name="Configurations">For each project folder, the configurations that compile it.</param>
-/// <param name="Folders">For each configuration and assembly name, the project folder.</param>
-public sealed record ProjectSet(string Solution, IReadOnlyDictionary<string, IReadOnlyList<string>> Configurations,
-    IReadOnlyDictionary<(string Configuration, string Assembly), string> Folders)
+/// <param name="Solution">The solution over every project that needs building (gate.slnx).</param>
+/// <param name="Graph">The compilations, one project each.</param>
+/// <param name="Cached">Project folders not built because the cache had them, with the cached DLL.</param>
+public sealed record ProjectSet(string Solution, AssemblyGraph Graph, IReadOnlyDictionary<string, string> Cached)
 {
-    /// <summary>For each project folder, the key of what it compiles (sources' bytes included), for the cache.</summary>
-    public IReadOnlyDictionary<string, string> ContentKeys { get; init; }
-
-    /// <summary>Project folders not built because the cache had them, with the cached DLL.</summary>
-    public IReadOnlyDictionary<string, string> Cached { get; init; }
-
-    /// <summary>The built DLL of an assembly in a configuration (after a successful build).</summary>
-    public string Output(string outDir, string configuration, string assembly)
-    {
-        string folder = Folders[(configuration, assembly)];
-        return Cached.TryGetValue(folder, out string dll) ? dll : System.IO.Path.Combine(outDir, folder, "bin", "Release", assembly + ".dll");
-    }
+    /// <summary>The DLL MSBuild builds (or the cache holds) for a compilation.</summary>
+    public string Output(string outDir, GateAssembly assembly) =>
+        Cached.TryGetValue(assembly.Folder, out string dll) ? dll : Path.Combine(outDir, assembly.Folder, "bin", "Release", assembly.Plan.Name + ".dll");
 }
 
 /// <summary>
 /// Writes the MSBuild projects for planned configurations, one solution (gate.slnx) over all of them,
 /// a configurations.txt saying which project each configuration compiles, and a Directory.Build.props/targets pair that keeps the projects
-/// from inheriting Tools~'s build settings. Every project compiles the package's own files in place (no copies):
-/// .NET Standard 2.1 reference assemblies, C# 9, the planned symbols, warnings (obsolete API included) as errors.
+/// from inheriting Tools~'s build settings. Every project compiles the package's own files in place (no copies), with
+/// the settings of <see cref="CompilerSettings"/>: .NET Standard 2.1, C# 9, the planned symbols, warnings (obsolete API included) as errors.
 /// </summary>
 public static class ProjectWriter
 {
     /// <summary>
-    /// Writes every plan under <paramref name="outDir"/> (replacing what was there). An assembly that comes out the
-    /// same in several configurations is written once and shared by them: same sources, options and references
-    /// (themselves shared), and either the same symbols or sources with no #if/#elif, so that the symbols cannot
-    /// change what the compiler sees. Each project is &lt;out&gt;/&lt;Assembly&gt;.&lt;hash&gt;/&lt;Assembly&gt;.&lt;hash&gt;.csproj.
+    /// Writes one project per compilation of the graph under <paramref name="outDir"/> (replacing what was there): an
+    /// assembly shared by several configurations is one project. Each project is
+    /// &lt;out&gt;/&lt;Assembly&gt;.&lt;hash&gt;/&lt;Assembly&gt;.&lt;hash&gt;.csproj.
     /// </summary>
     /// <param name="packageRoot">The package.</param>
     /// <param name="outDir">Where the projects go.</param>
-    /// <param name="plans">What to compile.</param>
+    /// <param name="graph">What to compile.</param>
     /// <param name="cacheDir">
-    /// Optional: a folder of assemblies compiled successfully before, by content (sources' bytes, options, symbols,
-    /// references). An assembly found there is referenced as built instead of compiled again, as an incremental build
-    /// would; the gate tests share one between the package and its planted copies.
+    /// Optional: a folder of assemblies MSBuild built successfully before, by <see cref="GateAssembly.ContentKey"/>.
+    /// An assembly found there is referenced as built instead of compiled again, as an incremental build would.
     /// </param>
-    public static ProjectSet Write(string packageRoot, string outDir, IReadOnlyList<ConfigurationPlan> plans, string cacheDir = null)
+    public static ProjectSet Write(string packageRoot, string outDir, AssemblyGraph graph, string cacheDir = null)
     {
         if (Directory.Exists(outDir)) Directory.Delete(outDir, recursive: true);
         Directory.CreateDirectory(outDir);
@@ -60,68 +46,40 @@ public static class ProjectWriter
         File.WriteAllText(Path.Combine(outDir, "Directory.Build.props"), stop);
         File.WriteAllText(Path.Combine(outDir, "Directory.Build.targets"), stop);
 
-        var folders = new Dictionary<string, string>(StringComparer.Ordinal);          // key -> project folder name
-        var users = new Dictionary<string, List<string>>(StringComparer.Ordinal);       // project folder -> configurations
-        var conditional = new Dictionary<string, bool>(StringComparer.Ordinal);        // source -> has #if/#elif
-        var map = new StringBuilder();
-        var allFolders = new Dictionary<(string, string), string>();
-        var contentKeys = new Dictionary<string, string>(StringComparer.Ordinal);      // project folder -> content key
-        var cached = new Dictionary<string, string>(StringComparer.Ordinal);           // project folder -> cached DLL
-        foreach (ConfigurationPlan plan in plans)
+        var cached = new Dictionary<string, string>(StringComparer.Ordinal); // project folder -> cached DLL
+        foreach (GateAssembly a in graph.Assemblies)
         {
-            var folderOf = new Dictionary<string, string>(StringComparer.Ordinal);     // assembly -> folder, this configuration
+            string hit = cacheDir == null ? null : Path.Combine(cacheDir, a.ContentKey, a.Plan.Name + ".dll");
+            if (hit != null && File.Exists(hit))
+            {
+                cached[a.Folder] = hit;
+                continue;
+            }
+            Directory.CreateDirectory(Path.Combine(outDir, a.Folder));
+            var refs = a.References.Select(r => cached.TryGetValue(r.Folder, out string dll) ? dll : r.Folder).ToList();
+            File.WriteAllText(Path.Combine(outDir, a.Folder, a.Folder + ".csproj"), Project(packageRoot, a.FirstConfiguration, a.Plan, refs));
+        }
+
+        var map = new StringBuilder();
+        foreach (ConfigurationPlan plan in graph.Plans)
+        {
             map.Append($"{plan.Configuration.Name}: {plan.Configuration.Description}\n");
             foreach (AssemblyPlan a in plan.Assemblies)
             {
-                bool definesMatter = a.Sources.Any(src => conditional.TryGetValue(src, out bool c) ? c : conditional[src] = HasConditional(packageRoot, src));
-                string key = string.Join("\n", new[] { a.Name, a.Kind.ToString(), a.AllowUnsafeCode.ToString(), a.RequireDocs.ToString(),
-                        definesMatter ? string.Join(";", a.Defines) : "(no #if)" }
-                    .Concat(a.Sources).Concat(a.References.Select(r => "ref:" + folderOf[r])).Concat(a.PrecompiledReferences));
-                if (!folders.TryGetValue(key, out string folder))
-                {
-                    folder = a.Name + "." + Hash(key).Substring(0, 8);
-                    folders[key] = folder;
-                    users[folder] = new List<string>();
-                    string content = Hash(key + "\n" + string.Join("\n", a.Sources.Select(src => Hash(File.ReadAllBytes(Path.Combine(packageRoot, src)))))
-                                          + "\n" + string.Join("\n", a.References.Select(r => contentKeys[folderOf[r]])));
-                    contentKeys[folder] = content;
-                    string hit = cacheDir == null ? null : Path.Combine(cacheDir, content, a.Name + ".dll");
-                    if (hit != null && File.Exists(hit))
-                        cached[folder] = hit;
-                    else
-                    {
-                        Directory.CreateDirectory(Path.Combine(outDir, folder));
-                        var refs = a.References.Select(r => cached.TryGetValue(folderOf[r], out string dll) ? dll : folderOf[r]).ToList();
-                        File.WriteAllText(Path.Combine(outDir, folder, folder + ".csproj"), Project(packageRoot, plan, a, refs));
-                    }
-                }
-                users[folder].Add(plan.Configuration.Name);
-                folderOf[a.Name] = folder;
-                allFolders[(plan.Configuration.Name, a.Name)] = folder;
+                string folder = graph.Of(plan.Configuration.Name, a.Name).Folder;
                 map.Append(cached.TryGetValue(folder, out string from) ? $"  {a.Name}: built before, {from}\n" : $"  {a.Name}: {folder}/{folder}.csproj\n");
             }
             foreach (SkippedAssembly skipped in plan.Skipped) map.Append($"  skipped {skipped.Name}: {skipped.Reason}\n");
         }
         var solution = new StringBuilder("<Solution>\n");
-        foreach (string folder in users.Keys.Where(f => !cached.ContainsKey(f)).OrderBy(f => f, StringComparer.Ordinal))
+        foreach (string folder in graph.Assemblies.Select(a => a.Folder).Where(f => !cached.ContainsKey(f)).OrderBy(f => f, StringComparer.Ordinal))
             solution.Append($"  <Project Path=\"{folder}/{folder}.csproj\" />\n");
         solution.Append("</Solution>\n");
         string slnx = Path.Combine(outDir, "gate.slnx");
         File.WriteAllText(slnx, solution.ToString());
         File.WriteAllText(Path.Combine(outDir, "configurations.txt"), map.ToString());
-        return new ProjectSet(slnx, users.ToDictionary(kv => kv.Key, kv => (IReadOnlyList<string>)kv.Value, StringComparer.Ordinal), allFolders)
-        {
-            ContentKeys = contentKeys,
-            Cached = cached,
-        };
+        return new ProjectSet(slnx, graph, cached);
     }
-
-    private static string Hash(string text) => Hash(Encoding.UTF8.GetBytes(text));
-
-    private static string Hash(byte[] bytes) => Convert.ToHexString(SHA256.HashData(bytes)).ToLowerInvariant();
-
-    private static bool HasConditional(string packageRoot, string source) =>
-        File.ReadLines(Path.Combine(packageRoot, source)).Any(l => Regex.IsMatch(l, @"^\s*#\s*(if|elif)\b"));
 
     /// <summary>The project text for one assembly of one configuration.</summary>
     public static string Project(string packageRoot, ConfigurationPlan plan, AssemblyPlan a, IReadOnlyList<string> referenceFolders)
@@ -132,22 +90,11 @@ public static class ProjectWriter
         foreach (string note in a.Notes) x.Append($"       {Esc(note)}\n");
         x.Append("       Do not edit: the gate rewrites it (avatargo-gate generate, in Tools~/AvatarGo.UnityGate). -->\n");
         x.Append("  <PropertyGroup>\n");
-        Prop(x, "TargetFramework", "netstandard2.1");
-        Prop(x, "LangVersion", "9.0");
         Prop(x, "AssemblyName", a.Name);
         Prop(x, "RootNamespace", "");
         Prop(x, "OutputType", "Library");
         Prop(x, "EnableDefaultItems", "false");
-        Prop(x, "DefineConstants", string.Join(";", a.Defines));
-        Prop(x, "TreatWarningsAsErrors", "true");
-        // 1701/1702: assembly-version unification notes MSBuild also silences; 2008: a surface with no declaration yet.
-        Prop(x, "NoWarn", a.Sources.Count == 0 ? "1701;1702;2008" : "1701;1702");
-        Prop(x, "AllowUnsafeBlocks", a.AllowUnsafeCode ? "true" : "false");
-        Prop(x, "GenerateDocumentationFile", a.RequireDocs ? "true" : "false");
-        Prop(x, "Nullable", "disable");
-        Prop(x, "ImplicitUsings", "disable");
-        Prop(x, "Deterministic", "true");
-        Prop(x, "Optimize", "false");
+        foreach (var (name, value) in CompilerSettings.For(a).MSBuildProperties()) Prop(x, name, value);
         // Unity compiles sources and nothing else: no generated AssemblyInfo, no SDK analyzers.
         Prop(x, "GenerateAssemblyInfo", "false");
         Prop(x, "GenerateTargetFrameworkAttribute", "false");

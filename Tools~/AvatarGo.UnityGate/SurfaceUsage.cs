@@ -50,7 +50,7 @@ public static class SurfaceUsage
                 var trees = (Directory.Exists(dir) ? Directory.GetFiles(dir, "*.cs", SearchOption.AllDirectories) : Array.Empty<string>())
                     .OrderBy(f => f, StringComparer.Ordinal)
                     .Select(f => CSharpSyntaxTree.ParseText(File.ReadAllText(f), options, f)).ToList();
-                var references = NetStandardReferences().Concat(assembly.References
+                var references = TargetingPack.NetStandard21.Concat(assembly.References
                     .Where(compiled.ContainsKey).Select(r => (MetadataReference)compiled[r].ToMetadataReference()));
                 var compilation = CSharpCompilation.Create(assembly.Name, trees, references,
                     new CSharpCompilationOptions(OutputKind.DynamicallyLinkedLibrary));
@@ -125,11 +125,11 @@ public static class SurfaceUsage
         foreach (ConfigurationPlan plan in built.Plans)
             foreach (AssemblyPlan a in plan.Assemblies.Where(a => a.Kind == PlanKind.Package && a.References.Any(surfaceNames.Contains)))
             {
-                if (!done.Add(built.Projects.Folders[(plan.Configuration.Name, a.Name)])) continue;
+                if (!done.Add(built.Projects.Graph.Of(plan.Configuration.Name, a.Name).Folder)) continue;
                 var options = new CSharpParseOptions(LanguageVersion.CSharp9, preprocessorSymbols: a.Defines);
                 var trees = a.Sources.Select(s => CSharpSyntaxTree.ParseText(File.ReadAllText(Path.Combine(packageRoot, s)), options, s)).ToList();
-                var references = NetStandardReferences()
-                    .Concat(a.References.Select(r => MetadataReference.CreateFromFile(built.Projects.Output(built.OutDir, plan.Configuration.Name, r))))
+                var references = TargetingPack.NetStandard21
+                    .Concat(a.References.Select(r => built.Built.Reference(built.Projects.Graph.Of(plan.Configuration.Name, r))))
                     .Concat(a.PrecompiledReferences.Select(p => MetadataReference.CreateFromFile(p)));
                 var compilation = CSharpCompilation.Create(a.Name, trees, references,
                     new CSharpCompilationOptions(OutputKind.DynamicallyLinkedLibrary, allowUnsafe: a.AllowUnsafeCode));
@@ -213,17 +213,6 @@ public static class SurfaceUsage
         }
     }
 
-    /// <summary>The .NET Standard 2.1 reference assemblies (the same the generated projects compile against).</summary>
-    public static IReadOnlyList<MetadataReference> NetStandardReferences()
-    {
-        if (_netstandard != null) return _netstandard;
-        string dir = Path.Combine(Program.NuGetPackageRoot, "netstandard.library.ref", "2.1.0", "ref", "netstandard2.1");
-        if (!Directory.Exists(dir)) throw new GateException($"{dir} is missing (restore Tools~/AvatarGo.slnx)");
-        _netstandard = Directory.GetFiles(dir, "*.dll").OrderBy(f => f, StringComparer.Ordinal).Select(f => (MetadataReference)MetadataReference.CreateFromFile(f)).ToList();
-        return _netstandard;
-    }
-
-    private static List<MetadataReference> _netstandard;
 
     private static readonly Dictionary<string, string> PairedOperators = new(StringComparer.Ordinal)
     {

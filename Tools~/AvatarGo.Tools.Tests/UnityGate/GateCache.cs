@@ -3,9 +3,10 @@ using System.IO;
 namespace AvatarGo.Tools.Tests.UnityGate;
 
 /// <summary>
-/// The compile cache the gate tests share (Tools~/out/gate-cache), emptied once per test run: an assembly compiled
-/// successfully earlier in the run from the same bytes, options and references is referenced instead of compiled
-/// again, so planted copies only compile what the plant changed. Nothing survives from an earlier run.
+/// MSBuild's compile cache for the gate tests that build with it (<see cref="CompilerAgreementTests"/>):
+/// Tools~/out/gate-cache, emptied once per test run. A project whose content (bytes, options and references) MSBuild
+/// built successfully earlier in the run is referenced as a DLL instead of built again. The in-process compiler keeps
+/// its own cache in memory. Nothing survives from an earlier run.
 /// </summary>
 public static class GateCache
 {

@@ -7,8 +7,9 @@ namespace AvatarGo.Tools.Tests.UnityGate;
 
 /// <summary>
 /// Each defect the gate exists to catch, planted in a temporary copy of the package; the gate must fail with that
-/// defect's own diagnostic (code, file and member), so no test can pass for the wrong reason. Each builds only the
-/// configurations and assemblies the defect concerns, to keep the default suite quick.
+/// defect's own diagnostic (code, file and member), so no test can pass for the wrong reason. Each compiles only the
+/// configurations and assemblies the defect concerns, in-process; what the copy shares with the package unchanged was
+/// compiled earlier in the run and is reused.
 /// </summary>
 [TestFixture]
 public class PlantedDefectTests
@@ -22,9 +23,13 @@ public class PlantedDefectTests
     [TearDown]
     public void DeleteCopy() => _copy.Dispose();
 
-    private GateResult Gate(string[] configurations, params string[] assemblies) =>
-        GateBuild.Run(_copy.Root, AvatarGo.UnityGate.Program.NuGetPackageRoot, configurations.Select(UnityConfiguration.Named), _copy.OutDir,
-            assemblies.Length > 0 ? assemblies : null, GateCache.Dir);
+    private GateResult Gate(string[] configurations, params string[] assemblies)
+    {
+        GateResult result = GateBuild.Run(_copy.Root, AvatarGo.UnityGate.Program.NuGetPackageRoot, configurations.Select(UnityConfiguration.Named), _copy.OutDir,
+            assemblies.Length > 0 ? assemblies : null);
+        TestContext.Out.WriteLine(result.Output + result.Describe()); // what was compiled and what reused, in the test's output
+        return result;
+    }
 
     private static GateDiagnostic AssertSingleError(GateResult result, string code, string file, params string[] fragments)
     {

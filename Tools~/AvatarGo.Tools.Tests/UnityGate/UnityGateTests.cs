@@ -11,8 +11,9 @@ namespace AvatarGo.Tools.Tests.UnityGate;
 /// <summary>
 /// The compile gate on this repository's package: every standard configuration (see
 /// <see cref="UnityConfiguration.Standard"/>) is planned from the asmdefs, written as MSBuild projects under
-/// Tools~/out/gate and built once; the tests then check the outcome, what each configuration compiled, and that the
-/// surface declares nothing the package does not use. <see cref="PlantedDefectTests"/> proves the gate can fail.
+/// Tools~/out/gate and compiled once in-process; the tests then check the outcome, what each configuration compiled, and that the
+/// surface declares nothing the package does not use. <see cref="PlantedDefectTests"/> proves the gate can fail, and
+/// <see cref="CompilerAgreementTests"/> that MSBuild builds the generated projects with the same outcome.
 /// </summary>
 [TestFixture]
 public class UnityGateTests
@@ -22,9 +23,9 @@ public class UnityGateTests
     [OneTimeSetUp]
     public void BuildEveryConfiguration()
     {
-        _gate = GateBuild.Run(Paths.PackageRoot, AvatarGo.UnityGate.Program.NuGetPackageRoot, UnityConfiguration.Standard, cacheDir: GateCache.Dir);
-        TestContext.Progress.WriteLine($"unity gate: {UnityConfiguration.Standard.Count} configurations, {_gate.Projects.Configurations.Count} distinct assemblies " +
-                                       $"({_gate.Projects.Cached.Count} compiled earlier in this run), " +
+        _gate = GateBuild.Run(Paths.PackageRoot, AvatarGo.UnityGate.Program.NuGetPackageRoot, UnityConfiguration.Standard);
+        TestContext.Progress.WriteLine($"unity gate: {UnityConfiguration.Standard.Count} configurations, {_gate.Projects.Graph.Assemblies.Count} distinct assemblies " +
+                                       $"({_gate.Reused} compiled earlier in this run), in-process " +
                                        $"{_gate.Seconds:0.0} s wall, {_gate.CpuSeconds:0.0} s processor ({_gate.Errors.Count} errors)");
     }
 
@@ -47,7 +48,10 @@ public class UnityGateTests
             "Unity 2021.3's ext.nunit 1.0.6 is a net35 build");
         string project = File.ReadAllText(Directory.GetFiles(_gate.OutDir, "AvatarGo.Core.Tests.*.csproj", SearchOption.AllDirectories).First());
         Assert.That(project, Does.Contain("<TargetFramework>netstandard2.1</TargetFramework>").And.Contain("<LangVersion>9.0</LangVersion>")
-            .And.Contain("<TreatWarningsAsErrors>true</TreatWarningsAsErrors>"));
+            .And.Contain("<TreatWarningsAsErrors>true</TreatWarningsAsErrors>")
+            .And.Contain("<DisableImplicitConfigurationDefines>true</DisableImplicitConfigurationDefines>")
+            .And.Contain("<DisableImplicitFrameworkDefines>true</DisableImplicitFrameworkDefines>"),
+            "Unity defines no RELEASE and no NETSTANDARD2_1_OR_GREATER: the SDK must not add them");
     }
 
     [Test]
