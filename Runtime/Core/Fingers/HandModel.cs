@@ -144,14 +144,24 @@ namespace AvatarGo.Core
         public static bool CanModel(HumanoidMap map, BodySide side, out string reason)
         {
             if (map == null) throw new ArgumentNullException(nameof(map));
+            return CanModelFromBones(map.Has, side, out reason);
+        }
+
+        /// <summary>
+        /// As <see cref="CanModel(HumanoidMap, BodySide, out string)"/>, for a rig known only by which humanoid bones it has
+        /// (<paramref name="has"/>): an inspector asks this of a Unity Animator.
+        /// </summary>
+        public static bool CanModelFromBones(Predicate<HumanoidBone> has, BodySide side, out string reason)
+        {
+            if (has == null) throw new ArgumentNullException(nameof(has));
             reason = null;
-            if (!map.Has(HumanoidBones.OnSide(HumanoidBone.LeftHand, side))) reason = $"the rig has no {side} hand bone";
-            else if (!map.Has(HumanoidBones.Finger(side, Finger.Little, Phalanx.Proximal)))
+            if (!has(HumanoidBones.OnSide(HumanoidBone.LeftHand, side))) reason = $"the rig has no {side} hand bone";
+            else if (!has(HumanoidBones.Finger(side, Finger.Little, Phalanx.Proximal)))
                 reason = $"the {side} hand has no little finger (the index, middle and little fingers' bases give the palm)";
             else
                 foreach (Finger f in new[] { Finger.Index, Finger.Middle })
                     for (Phalanx k = Phalanx.Proximal; k <= Phalanx.Distal && reason == null; k++)
-                        if (!map.Has(HumanoidBones.Finger(side, f, k))) reason = $"the {side} hand lacks {HumanoidBones.Finger(side, f, k)}";
+                        if (!has(HumanoidBones.Finger(side, f, k))) reason = $"the {side} hand lacks {HumanoidBones.Finger(side, f, k)}";
             return reason == null;
         }
 
