@@ -182,4 +182,30 @@ public class PlantedDefectTests
         Assert.That(result.Errors.Select(e => e.Configuration).Distinct(), Is.EqualTo(new[] { "editor-2021.3-partial" }), result.Describe());
         Assert.That(result.Errors.Any(e => e.File == "Runtime/SteamVR/SteamVRTrackingSource.cs" && e.Message.Contains("ETrackedDeviceProperty")), Is.True, result.Describe());
     }
+    [Test]
+    public void OpenXRFeatureAttributeWithoutItsEditorGuardFailsInThePlayerBuild()
+    {
+        // OpenXR declares OpenXRFeatureAttribute (namespace UnityEditor.XR.OpenXR.Features) in its runtime assembly, but
+        // only under #if UNITY_EDITOR: the Editor compiles the unguarded attribute, a player build does not.
+        const string feature = "Runtime/OpenXR/ViveTrackerFeature.cs";
+        _copy.Replace(feature, "#if UNITY_EDITOR\n    [UnityEditor.XR.OpenXR.Features.OpenXRFeature(", "#if true\n    [UnityEditor.XR.OpenXR.Features.OpenXRFeature(");
+        GateResult result = Gate(new[] { "editor-2021.3", "player-2021.3" }, "AvatarGo.OpenXR");
+        GateDiagnostic error = AssertSingleError(result, "CS0246", feature, "'UnityEditor' could not be found");
+        Assert.That(error.Configuration, Is.EqualTo("player-2021.3"));
+        Assert.That(result.Errors.Select(e => e.Configuration).Distinct(), Is.EqualTo(new[] { "player-2021.3" }), result.Describe());
+        Assert.That(result.Errors.All(e => e.File == feature && e.Message.Contains("UnityEditor")), Is.True, result.Describe());
+    }
+
+    [Test]
+    public void FindObjectOfTypeWithoutItsVersionGuardFailsFromUnity2023()
+    {
+        // Object.FindObjectOfType is obsolete (a warning, an error here as in a warnings-as-errors project) from 2023.1;
+        // the XR Origin setup uses FindAnyObjectByType there.
+        const string setup = "Runtime/XRInteractionToolkit/XROriginTrackingSetup.cs";
+        _copy.Replace(setup, "#if UNITY_2023_1_OR_NEWER\n            if (m_Origin == null) m_Origin = FindAnyObjectByType<XROrigin>();\n#else\n", "#if false\n#else\n");
+        GateResult result = Gate(new[] { "editor-2021.3", "editor-6000.5" }, "AvatarGo.XRInteractionToolkit");
+        GateDiagnostic error = AssertSingleError(result, "CS0618", setup, "FindObjectOfType");
+        Assert.That(error.Configuration, Is.EqualTo("editor-6000.5"));
+        Assert.That(result.Errors.Select(e => e.Configuration).Distinct(), Is.EqualTo(new[] { "editor-6000.5" }), result.Describe());
+    }
 }
