@@ -206,7 +206,8 @@ public static class SurfaceUsage
                     return;
                 case INamedTypeSymbol named:
                     foreach (ITypeSymbol arg in named.TypeArguments) AddType(arg);
-                    for (INamedTypeSymbol t = named; t != null; t = t.ContainingType)
+                    // Its containing and base types too: a type cannot be declared without them (Material's base, Object).
+                    for (INamedTypeSymbol t = named.OriginalDefinition; t != null; t = t.ContainingType ?? t.BaseType)
                         if (t.ContainingAssembly != null && surfaceNames.Contains(t.ContainingAssembly.Name)) used.Add(t.OriginalDefinition.GetDocumentationCommentId());
                     return;
             }

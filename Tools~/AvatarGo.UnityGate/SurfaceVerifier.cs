@@ -107,6 +107,7 @@ public static class SurfaceVerifier
         OperatorDeclarationSyntax x => "op" + x.OperatorToken.Text,
         EnumMemberDeclarationSyntax x => x.Identifier.Text,
         EventFieldDeclarationSyntax x => x.Declaration.Variables[0].Identifier.Text,
+        EventDeclarationSyntax x => x.Identifier.Text,
         _ => n.Kind().ToString(),
     };
 
@@ -124,6 +125,9 @@ public static class SurfaceVerifier
             IndexerDeclarationSyntax x => $"{Mods(x.Modifiers)} {Last(x.Type.ToString())} this[{string.Join(", ", x.ParameterList.Parameters.Select(p => Last(p.Type?.ToString()) + " " + p.Identifier.Text))}] {{{string.Join(" ", (x.AccessorList?.Accessors.Select(a => (Mods(a.Modifiers) + " " + a.Keyword.Text).Trim()) ?? new[] { "get" }))}}}",
             FieldDeclarationSyntax x => $"{Mods(x.Modifiers)} {Last(x.Declaration.Type.ToString())} {x.Declaration.Variables[0].Identifier.Text}",
             EnumMemberDeclarationSyntax x => $"{x.Identifier.Text} = {x.EqualsValue?.Value}",
+            // An event with accessors and a field-like event are the same to a caller: kind, type and name.
+            EventDeclarationSyntax x => $"{Mods(x.Modifiers)} event {Last(x.Type.ToString())} {x.Identifier.Text}",
+            EventFieldDeclarationSyntax x => $"{Mods(x.Modifiers)} event {Last(x.Declaration.Type.ToString())} {x.Declaration.Variables[0].Identifier.Text}",
             _ => n.ToString(),
         };
     }

@@ -1,4 +1,5 @@
 using System.Collections.Generic;
+using System.IO;
 using System.Linq;
 using AvatarGo.UnityGate;
 using NUnit.Framework;
@@ -132,17 +133,16 @@ public class PlantedDefectTests
     [Test]
     public void UsingAModuleWithoutItsPackageDependencyIsReported()
     {
-        _copy.Write("Tools~/UnitySurface/UnityEngine/AnimationModule/AnimatorCullingMode.cs",
-            "namespace UnityEngine\n{\n    // UnityCsReference@2021.3 Modules/Animation/ScriptBindings/Animator.bindings.cs\n" +
-            "    public enum AnimatorCullingMode\n    {\n        AlwaysAnimate = 0,\n        CullUpdateTransforms = 1,\n        CullCompletely = 2,\n    }\n}\n");
-        _copy.Write("Runtime/Bridge/PlantedCulling.cs",
-            "namespace AvatarGo\n{\n    internal static class PlantedCulling\n    {\n" +
-            "        internal static UnityEngine.AnimatorCullingMode Mode => UnityEngine.AnimatorCullingMode.AlwaysAnimate;\n    }\n}\n");
+        // The package's Animator code needs com.unity.modules.animation; take the dependency out of the copy.
+        const string dependency = "\"com.unity.modules.animation\": \"1.0.0\",";
+        Assert.That(File.ReadAllText(Path.Combine(_copy.Root, "package.json")), Does.Contain(dependency));
+        _copy.Replace("package.json", dependency, "");
         GateResult result = Gate(new[] { "editor-2021.3" }, "AvatarGo");
         Assert.That(result.Succeeded, Is.True, result.Describe());
         List<string> problems = ModuleDependencies.Check(_copy.Root, result);
-        Assert.That(problems, Has.Member("package.json: the package uses UnityEngine.AnimationModule (T:UnityEngine.AnimatorCullingMode) but \"dependencies\" lacks \"com.unity.modules.animation\": \"1.0.0\""));
-        _copy.Replace("package.json", "\"com.unity.modules.xr\": \"1.0.0\"", "\"com.unity.modules.xr\": \"1.0.0\",\n    \"com.unity.modules.animation\": \"1.0.0\"");
+        Assert.That(problems, Has.Some.StartsWith("package.json: the package uses UnityEngine.AnimationModule (")
+            .And.EndsWith("but \"dependencies\" lacks \"com.unity.modules.animation\": \"1.0.0\""), string.Join("\n", problems));
+        _copy.Replace("package.json", "\"dependencies\": {", "\"dependencies\": {\n    " + dependency);
         Assert.That(ModuleDependencies.Check(_copy.Root, result), Is.Empty);
     }
 

@@ -9,9 +9,13 @@ namespace UnityEngine
     {
         public Transform transform => throw null;
 
+        public GameObject gameObject => throw null;
+
         public T GetComponent<T>() => throw null;
 
         public T GetComponentInChildren<T>(bool includeInactive) => throw null;
+
+        public T[] GetComponentsInChildren<T>(bool includeInactive) => throw null;
 
         public void GetComponentsInChildren<T>(bool includeInactive, List<T> result) => throw null;
 

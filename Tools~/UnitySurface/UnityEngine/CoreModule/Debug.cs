@@ -2,11 +2,14 @@
 
 namespace UnityEngine
 {
-    // a non-static class with static members
     // UnityCsReference@2021.3 Runtime/Export/Debug/Debug.bindings.cs
-    public class Debug
+    public partial class Debug
     {
+        public static void Log(object message, Object context) => throw null;
+
         public static void LogError(object message, Object context) => throw null;
+
+        public static void LogException(System.Exception exception, Object context) => throw null;
 
         public static void LogWarning(object message, Object context) => throw null;
     }

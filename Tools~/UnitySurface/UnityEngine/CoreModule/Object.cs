@@ -22,5 +22,12 @@ namespace UnityEngine
         public static bool operator ==(Object x, Object y) => throw null;
 
         public static bool operator !=(Object x, Object y) => throw null;
+
+        public static T Instantiate<T>(T original, Transform parent) where T : Object => throw null;
+
+        // Deferred to the end of the frame.
+        public static void Destroy(Object obj) => throw null;
+
+        public static void DestroyImmediate(Object obj) => throw null;
     }
 }

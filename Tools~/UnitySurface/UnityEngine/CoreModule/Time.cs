@@ -7,5 +7,9 @@ namespace UnityEngine
     public class Time
     {
         public static double timeAsDouble => throw null;
+
+        public static float deltaTime => throw null;
+
+        public static int frameCount => throw null;
     }
 }

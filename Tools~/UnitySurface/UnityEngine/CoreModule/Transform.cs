@@ -19,6 +19,15 @@ namespace UnityEngine
         // Safe in every 2021.3 patch; SetLocalPositionAndRotation (2021.3.11f1) and GetPositionAndRotation (2021.3.17f1) are not.
         public void SetPositionAndRotation(Vector3 position, Quaternion rotation) => throw null;
 
+        public Vector3 localScale { get => throw null; set => throw null; }
+
+        // Uniform scales only: a non-uniform scale shears the children.
+        public Vector3 lossyScale => throw null;
+
+        public Transform parent { get => throw null; set => throw null; }
+
+        public void SetParent(Transform parent, bool worldPositionStays) => throw null;
+
         public int childCount => throw null;
 
         public Transform GetChild(int index) => throw null;

@@ -1,0 +1,459 @@
+using System;
+using System.IO;
+using AvatarGo.Core;
+using UnityEngine;
+using UnityEngine.Events;
+
+namespace AvatarGo
+{
+    /// <summary>
+    /// The Walk-In-Avatar calibration for one avatar: owns the <see cref="SelfAvatarPipeline"/>, reads the tracking source
+    /// once a frame before any other script (<see cref="AvatarGoExecutionOrder.Calibrator"/>) and runs the pipeline on it.
+    /// In the headset it shows the wearer's instructions and every calibration message (world-space text), a marker on
+    /// every device, the scaled avatar in T-pose where the wearer stood with its mirror image beyond a mirror in front of
+    /// it during the walk-in, and hides the avatar until then. It saves each calibration to
+    /// <c>Application.persistentDataPath</c> (atomically) and restores it on start when the same devices are worn.
+    /// The avatar's bones are written by a driver: <see cref="AvatarGoAnimatorIKDriver"/> (added when missing, the default)
+    /// or <see cref="AvatarGoTransformDriver"/>.
+    /// </summary>
+    /// <remarks>
+    /// Frame order: this component's <c>Update</c> (source read, pipeline) → the IK driver's <c>Update</c> (the avatar's
+    /// root placed) → the Animator and its IK pass (<c>OnAnimatorIK</c>) → <c>LateUpdate</c>: transform driver, fingers,
+    /// held controllers → <c>Application.onBeforeRender</c>: the mirrored copy. Poses are sampled in <c>Update</c>, after the
+    /// XR input update of the frame and before the Animator, so the body is solved and drawn from the same sample; the
+    /// camera's render pose, refreshed again before rendering, can be a few milliseconds newer.
+    /// </remarks>
+    [AddComponentMenu("XR/AvatarGo/Calibrator")]
+    [HelpURL(AvatarGoDocs.Manual + "calibrator.md")]
+    [DisallowMultipleComponent]
+    [DefaultExecutionOrder(AvatarGoExecutionOrder.Calibrator)]
+    public sealed class AvatarGoCalibrator : MonoBehaviour
+    {
+        /// <summary>Which component writes the avatar's bones.</summary>
+        public enum DriverKind
+        {
+            /// <summary>Unity's humanoid IK (<see cref="AvatarGoAnimatorIKDriver"/>, added to the Animator when missing): the paper's driver.</summary>
+            AnimatorIK = 0,
+
+            /// <summary>The core's full-body solve written to the transforms (<see cref="AvatarGoTransformDriver"/>, added when missing).</summary>
+            Transforms = 1,
+
+            /// <summary>None added: the application brings its own.</summary>
+            None = 2,
+        }
+
+        [SerializeField, Tooltip("Where the devices come from (Unity XR devices, Input System actions, transforms, a recorded session...).")]
+        private AvatarGoTrackingSource m_Source;
+
+        [SerializeField, Tooltip("The avatar: an Animator with a humanoid Avatar.")]
+        private Animator m_Animator;
+
+        [SerializeField, Tooltip("For an avatar without a humanoid Animator: its root transform (the bones are found from their names). Ignored when an Animator is set.")]
+        private Transform m_AvatarRoot;
+
+        [SerializeField, Tooltip("Which component writes the avatar's bones (added when missing).")]
+        private DriverKind m_Driver = DriverKind.AnimatorIK;
+
+        [SerializeField, Tooltip("Exact offsets (the paper's method) or the fixed-offset baseline.")]
+        private OffsetMode m_Offsets = OffsetMode.Exact;
+
+        [SerializeField, Tooltip("On start, reuse the calibration saved for this avatar when the same devices (by serial) are connected.")]
+        private bool m_RestoreSavedProfile = true;
+
+        [SerializeField, Tooltip("Save each new calibration to Application.persistentDataPath/AvatarGo (atomically).")]
+        private bool m_SaveProfile = true;
+
+        [SerializeField, Tooltip("Hide the avatar until the T-pose step has scaled and placed it.")]
+        private bool m_HideAvatarUntilTPose = true;
+
+        [SerializeField, Tooltip("Show the wearer's instructions and the calibration's messages in front of the head.")]
+        private bool m_ShowInstructions = true;
+
+        [SerializeField, Tooltip("Show a sphere on every device until calibrated.")]
+        private bool m_ShowDeviceMarkers = true;
+
+        [SerializeField, Tooltip("Show the avatar's mirror image during the walk-in.")]
+        private bool m_ShowMirror = true;
+
+        [SerializeField, Tooltip("How far in front of the avatar the mirror stands (m); the mirror image is twice as far.")]
+        private float m_MirrorDistance = 1.5f;
+
+        [SerializeField, Tooltip("Keep the mirror once calibrated.")]
+        private bool m_KeepMirrorAfterCalibration = false;
+
+        [SerializeField, Tooltip("Diameter of the device markers (m).")]
+        private float m_MarkerSize = 0.06f;
+
+        [SerializeField, Tooltip("TextMesh character size of the instructions (world units per font unit).")]
+        private float m_TextSize = 0.0025f;
+
+        [SerializeField, Tooltip("The T-pose step succeeded: the avatar is shown for the walk-in.")]
+        private UnityEvent m_OnTPoseAccepted = new UnityEvent();
+
+        [SerializeField, Tooltip("The walk-in step succeeded: the avatar follows the wearer.")]
+        private UnityEvent m_OnCalibrated = new UnityEvent();
+
+        [SerializeField, Tooltip("A saved calibration was restored.")]
+        private UnityEvent m_OnRestored = new UnityEvent();
+
+        [SerializeField, Tooltip("A step was refused; the argument is the message shown to the wearer.")]
+        private UnityEvent<string> m_OnStepRefused = new UnityEvent<string>();
+
+        [SerializeField, Tooltip("The calibration was reset (cancel or redo).")]
+        private UnityEvent m_OnCalibrationReset = new UnityEvent();
+
+        private readonly CalibrationFlow _flow = new CalibrationFlow();
+        private SelfAvatarPipeline _pipeline;
+        private SessionFrame _frame;
+        private int _headerVersion = int.MinValue;
+        private CalibrationDisplay _display;
+        private AvatarGoFingers _fingers;
+        private bool _failed, _resetByUser, _hasFrame;
+        private MirrorPlane _mirror;
+        private bool _hasMirror;
+
+        /// <summary>Where the devices come from.</summary>
+        public AvatarGoTrackingSource Source { get => m_Source; set => m_Source = value; }
+
+        /// <summary>The avatar's Animator (humanoid).</summary>
+        public Animator Animator { get => m_Animator; set => m_Animator = value; }
+
+        /// <summary>The root of an avatar without a humanoid Animator.</summary>
+        public Transform AvatarRoot { get => m_AvatarRoot; set => m_AvatarRoot = value; }
+
+        /// <summary>Exact or fixed offsets; read when the pipeline is made and at each calibration.</summary>
+        public OffsetMode Offsets { get => m_Offsets; set => m_Offsets = value; }
+
+        /// <summary>Diameter of the device markers (m).</summary>
+        public float MarkerSize => m_MarkerSize;
+
+        /// <summary>Character size of the instructions.</summary>
+        public float TextSize => m_TextSize;
+
+        /// <summary>The avatar's transforms bound to the core, once started (null if the avatar cannot be bound).</summary>
+        public HumanoidBinding Binding { get; private set; }
+
+        /// <summary>The pipeline, once the source has devices; made again when the source's devices change.</summary>
+        public SelfAvatarPipeline Pipeline => _pipeline;
+
+        /// <summary>This frame's devices as read from the source (valid when <see cref="HasFrame"/>).</summary>
+        public SessionFrame CurrentFrame => _frame;
+
+        /// <summary>True once a frame has been read.</summary>
+        public bool HasFrame => _hasFrame;
+
+        /// <summary>Where tracking space lies in the scene this frame.</summary>
+        public TrackingSpace TrackingSpace { get; private set; } = TrackingSpace.World;
+
+        /// <summary>What is shown and announced.</summary>
+        public CalibrationFlow Flow => _flow;
+
+        /// <summary>Where this avatar's calibration is saved.</summary>
+        public string ProfilePath => Path.Combine(AvatarGoFiles.Folder(Application.persistentDataPath), AvatarGoFiles.ProfileFileName(AvatarName));
+
+        /// <summary>Raised every frame after the pipeline ran, with the frame it was fed (AvatarGoRecorder records it).</summary>
+        public event Action<SessionFrame> FrameRead;
+
+        /// <summary>The T-pose step succeeded.</summary>
+        public UnityEvent OnTPoseAccepted => m_OnTPoseAccepted;
+
+        /// <summary>The walk-in step succeeded.</summary>
+        public UnityEvent OnCalibrated => m_OnCalibrated;
+
+        /// <summary>A saved calibration was restored.</summary>
+        public UnityEvent OnRestored => m_OnRestored;
+
+        /// <summary>A step was refused, with the wearer's message.</summary>
+        public UnityEvent<string> OnStepRefused => m_OnStepRefused;
+
+        /// <summary>The calibration was reset.</summary>
+        public UnityEvent OnCalibrationReset => m_OnCalibrationReset;
+
+        private string AvatarName => m_Animator != null && m_Animator.avatar != null ? m_Animator.avatar.name
+            : Binding != null ? Binding.Root.name : name;
+
+        /// <summary>Cancels or redoes the calibration: back to the T-pose step; the saved calibration is not restored again.</summary>
+        public void ResetCalibration()
+        {
+            _resetByUser = true;
+            if (_pipeline == null) return;
+            _pipeline.Reset();
+            _flow.Reset(_hasFrame ? _frame.Time : 0.0, _pipeline.LastCalibrationStep.Message);
+            Debug.Log($"{nameof(AvatarGoCalibrator)}: calibration reset. {_pipeline.LastCalibrationStep.Message}", this);
+            Raise(m_OnCalibrationReset);
+        }
+
+        /// <summary>
+        /// Restores this avatar's saved calibration now, if there is one, it was measured on this avatar, and its devices are
+        /// connected (matched by serial). Returns true when restored.
+        /// </summary>
+        public bool RestoreSavedProfile()
+        {
+            if (_pipeline == null || Binding == null) return false;
+            string path = ProfilePath;
+            if (!File.Exists(path)) return false;
+            CalibrationProfile profile;
+            try
+            {
+                profile = CalibrationProfileStore.Load(path);
+            }
+            catch (Exception e) when (e is IOException || e is FormatException || e is UnauthorizedAccessException)
+            {
+                Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: the saved calibration {path} cannot be read ({e.Message}); calibrate again.", this);
+                return false;
+            }
+            if (!AvatarGoFiles.ProfileFits(profile, Binding.Map, out string reason))
+            {
+                Debug.Log($"{nameof(AvatarGoCalibrator)}: the saved calibration {path} is not for this avatar ({reason}).", this);
+                return false;
+            }
+            if (!_pipeline.TryRestore(profile))
+            {
+                Debug.Log($"{nameof(AvatarGoCalibrator)}: the saved calibration's devices are not all connected (yet); calibrate, or wait for them.", this);
+                return false;
+            }
+            _flow.Restored(_hasFrame ? _frame.Time : 0.0);
+            Debug.Log($"{nameof(AvatarGoCalibrator)}: calibration restored from {path}.", this);
+            Raise(m_OnRestored);
+            return true;
+        }
+
+        /// <summary>Saves the current calibration to <see cref="ProfilePath"/> (atomically). Returns false, with a warning, when it cannot.</summary>
+        public bool SaveProfile()
+        {
+            if (_pipeline == null || _pipeline.State != CalibrationState.Calibrated || _pipeline.Profile == null) return false;
+            try
+            {
+                CalibrationProfileStore.Save(_pipeline.Profile, ProfilePath);
+                return true;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: the calibration could not be saved to {ProfilePath} ({e.Message}).", this);
+                return false;
+            }
+        }
+
+        internal void Attach(AvatarGoFingers fingers)
+        {
+            _fingers = fingers;
+            if (_pipeline == null) return;
+            fingers.ConfigureHands(_pipeline.Settings);
+            _pipeline.ApplyHandSettings();
+        }
+
+        internal void Detach(AvatarGoFingers fingers)
+        {
+            if (_fingers == fingers) _fingers = null;
+        }
+
+        private void OnEnable() => Application.onBeforeRender += UpdateMirror;
+
+        private void OnDisable()
+        {
+            Application.onBeforeRender -= UpdateMirror;
+            _display?.HideAll();
+        }
+
+        private void Start()
+        {
+            if (m_Source == null)
+            {
+                Fail("no tracking source is assigned");
+                return;
+            }
+            bool bound = m_Animator != null
+                ? HumanoidBinding.TryBind(m_Animator, out HumanoidBinding binding, out string error)
+                : HumanoidBinding.TryBindByNames(m_AvatarRoot, out binding, out error);
+            if (!bound)
+            {
+                Fail(m_Animator == null && m_AvatarRoot == null ? "no avatar is assigned (an Animator, or the root of an avatar without one)" : error);
+                return;
+            }
+            Binding = binding;
+            _display = new CalibrationDisplay(this, binding);
+            AddDriver();
+        }
+
+        private void Update()
+        {
+            if (_failed || Binding == null) return;
+            if (Binding.Root == null)
+            {
+                Fail("the avatar was destroyed");
+                return;
+            }
+            SessionHeader header = m_Source != null ? m_Source.Header : null;
+            if (header == null) return; // no devices yet
+            if (_pipeline == null || m_Source.HeaderVersion != _headerVersion) Rebuild(header);
+            if (_failed) return;
+            CalibrationStep step;
+            try
+            {
+                m_Source.Read(_frame);
+                TrackingSpace = m_Source.GetTrackingSpace();
+                step = _pipeline.Update(_frame);
+            }
+            catch (Exception e)
+            {
+                Debug.LogException(e, this);
+                Fail("the tracking source or the pipeline failed (see the exception above)");
+                return;
+            }
+            _hasFrame = true;
+            Announce(_flow.Update(_frame.Time, step, _pipeline.State), step);
+            ShowFrame();
+            Action<SessionFrame> read = FrameRead;
+            if (read != null) read(_frame);
+        }
+
+        private void OnDestroy()
+        {
+            _display?.Dispose();
+            _display = null;
+        }
+
+        // The devices changed (or first came): a new pipeline for them; a calibration in use is carried over when its devices
+        // are still there, else the saved one is tried.
+        private void Rebuild(SessionHeader header)
+        {
+            SelfAvatarPipeline old = _pipeline;
+            var settings = new PipelineSettings { Offsets = m_Offsets };
+            if (_fingers != null) _fingers.ConfigureHands(settings);
+            try
+            {
+                _pipeline = new SelfAvatarPipeline(header.Devices, Binding.Map, settings);
+            }
+            catch (ArgumentException e)
+            {
+                Fail($"the pipeline cannot be made for the source's devices: {e.Message}");
+                return;
+            }
+            _frame = new SessionFrame(header);
+            _headerVersion = m_Source.HeaderVersion;
+            _display.SetDeviceCount(header.Devices.Count);
+            double now = _hasFrame ? _frame.Time : 0.0;
+            if (old != null && old.State == CalibrationState.Calibrated && old.Profile != null)
+            {
+                if (_pipeline.TryRestore(old.Profile))
+                {
+                    _flow.Restored(now);
+                    Debug.Log($"{nameof(AvatarGoCalibrator)}: the devices changed; the calibration is kept (its devices are all still there).", this);
+                    return;
+                }
+                Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: a calibrated device is gone; calibrate again.", this);
+            }
+            _flow.Reset(now, _pipeline.LastCalibrationStep.Message);
+            if (m_RestoreSavedProfile && !_resetByUser) RestoreSavedProfile();
+        }
+
+        private void Announce(CalibrationFlowEvents events, CalibrationStep step)
+        {
+            if (events == CalibrationFlowEvents.None) return;
+            string explanation = step.Explanation.Length > 0 ? " [" + step.Explanation + "]" : "";
+            if ((events & CalibrationFlowEvents.PressIgnored) != 0) Debug.Log($"{nameof(AvatarGoCalibrator)}: {step.Explanation}", this);
+            if ((events & CalibrationFlowEvents.StepRefused) != 0)
+            {
+                Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: {step.State} step refused ({step.Error}): {step.Message}{explanation}", this);
+                Raise(m_OnStepRefused, step.Message);
+            }
+            if ((events & CalibrationFlowEvents.TPoseAccepted) != 0)
+            {
+                Debug.Log($"{nameof(AvatarGoCalibrator)}: T-pose accepted (avatar scale {_pipeline.Profile.AvatarScale:0.000}). {step.Message}{explanation}", this);
+                Raise(m_OnTPoseAccepted);
+            }
+            if ((events & CalibrationFlowEvents.Calibrated) != 0)
+            {
+                Debug.Log($"{nameof(AvatarGoCalibrator)}: calibrated.{explanation}", this);
+                if ((events & CalibrationFlowEvents.SaveProfile) != 0 && m_SaveProfile) SaveProfile();
+                Raise(m_OnCalibrated);
+            }
+        }
+
+        private void ShowFrame()
+        {
+            _flow.KeepMirrorAfterCalibration = m_KeepMirrorAfterCalibration;
+            SkeletonPose pose = _pipeline.Pose;
+            _display.ShowAvatar(pose != null || !m_HideAvatarUntilTPose);
+            _hasMirror = false;
+            if (m_ShowMirror && _flow.ShowsMirror && pose != null && _pipeline.Profile != null)
+            {
+                MirrorPlane tracking = MirrorPlane.InFrontOf(_pipeline.Profile.Placement, m_MirrorDistance);
+                TrackingSpace space = TrackingSpace;
+                _mirror = new MirrorPlane(space.ToWorld(tracking.Point), System.Numerics.Vector3.Transform(tracking.Normal, space.Origin.Rotation));
+                _hasMirror = true;
+            }
+            _display.UpdateMarkers(_frame, TrackingSpace, m_ShowDeviceMarkers && _flow.ShowsMarkers, _hasMirror, _mirror);
+            _display.UpdateText(_flow.Message, m_ShowInstructions, HeadSample(), TrackingSpace, Time.deltaTime);
+        }
+
+        // The HMD's sample: the device playing the head once identified, else the first HMD of the source.
+        private DeviceSample HeadSample()
+        {
+            int head = _pipeline.DeviceIndexOf(DeviceRole.Head);
+            if (head < 0)
+                for (int d = 0; d < _pipeline.Devices.Count && head < 0; d++)
+                    if (_pipeline.Devices[d].Class == DeviceClass.Hmd) head = d;
+            return head >= 0 ? _frame.Samples[head] : DeviceSample.Lost;
+        }
+
+        // Before rendering, once every bone is final: the mirrored copy takes the avatar's pose.
+        private void UpdateMirror()
+        {
+            if (_display == null || _failed) return;
+            _display.UpdateMirror(_hasMirror, _mirror);
+        }
+
+        private void AddDriver()
+        {
+            switch (m_Driver)
+            {
+                case DriverKind.AnimatorIK when m_Animator != null:
+                    AvatarGoAnimatorIKDriver ik = m_Animator.GetComponent<AvatarGoAnimatorIKDriver>();
+                    if (ik == null) ik = m_Animator.gameObject.AddComponent<AvatarGoAnimatorIKDriver>();
+                    if (ik.Calibrator == null) ik.Calibrator = this;
+                    break;
+                case DriverKind.AnimatorIK:
+                case DriverKind.Transforms:
+                    if (m_Driver == DriverKind.AnimatorIK)
+                        Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: the avatar has no humanoid Animator; its bones are written by an {nameof(AvatarGoTransformDriver)} instead of Animator IK.", this);
+                    AvatarGoTransformDriver transforms = Binding.Root.GetComponent<AvatarGoTransformDriver>();
+                    if (transforms == null) transforms = Binding.Root.gameObject.AddComponent<AvatarGoTransformDriver>();
+                    if (transforms.Calibrator == null) transforms.Calibrator = this;
+                    break;
+            }
+        }
+
+        private void Raise(UnityEvent e)
+        {
+            try
+            {
+                e?.Invoke();
+            }
+            catch (Exception x)
+            {
+                Debug.LogException(x, this);
+            }
+        }
+
+        private void Raise(UnityEvent<string> e, string argument)
+        {
+            try
+            {
+                e?.Invoke(argument);
+            }
+            catch (Exception x)
+            {
+                Debug.LogException(x, this);
+            }
+        }
+
+        // A setup error: logged once with this component as context; the component disables itself.
+        private void Fail(string message)
+        {
+            _failed = true;
+            Debug.LogError($"{nameof(AvatarGoCalibrator)} on '{name}': {message}. The component disables itself.", this);
+            enabled = false;
+        }
+    }
+}

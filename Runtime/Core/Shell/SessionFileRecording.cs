@@ -1,0 +1,113 @@
+using System;
+using System.IO;
+using System.Text;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// A recording to a session file that appears whole or not at all: frames are streamed (through a
+    /// <see cref="SessionRecorder"/>, never the whole session in memory) into <see cref="PartialPath"/> beside the target,
+    /// and <see cref="Complete"/> writes the end line, flushes the file to disk and renames it onto <see cref="Path"/> in one
+    /// step (replacing an older file of that name). If the process dies first, the target is untouched and the partial file
+    /// holds every frame written up to the last flush (at most the writer's buffers, about 68 KiB or a second of a
+    /// 90 Hz six-device session, are lost), without its end line:
+    /// <see cref="SessionReader"/> reads those frames and then reports the file as truncated.
+    /// </summary>
+    public sealed class SessionFileRecording : IDisposable
+    {
+        private const int BufferSize = 1 << 16;
+        private readonly FileStream _stream;
+        private readonly StreamWriter _text;
+        private readonly SessionRecorder _recorder;
+
+        /// <summary>The file name suffix of a recording in progress (or of one a crash interrupted).</summary>
+        public const string PartialSuffix = ".partial";
+
+        /// <summary>Starts recording the devices of <paramref name="header"/> to <paramref name="path"/> (its folder is created).</summary>
+        /// <exception cref="IOException">The partial file cannot be created.</exception>
+        /// <exception cref="ArgumentException">A device's serial cannot be written (white space in it).</exception>
+        public SessionFileRecording(string path, SessionHeader header)
+        {
+            if (path == null) throw new ArgumentNullException(nameof(path));
+            if (header == null) throw new ArgumentNullException(nameof(header));
+            Header = header;
+            Path = System.IO.Path.GetFullPath(path);
+            PartialPath = Path + PartialSuffix;
+            Directory.CreateDirectory(System.IO.Path.GetDirectoryName(Path));
+            _stream = new FileStream(PartialPath, FileMode.Create, FileAccess.Write, FileShare.Read, 4096);
+            try
+            {
+                _text = new StreamWriter(_stream, new UTF8Encoding(false), BufferSize);
+                _recorder = new SessionRecorder(new SessionWriter(_text, header));
+            }
+            catch
+            {
+                _stream.Dispose();
+                File.Delete(PartialPath);
+                throw;
+            }
+        }
+
+        /// <summary>The devices recorded (every frame must be made for them).</summary>
+        public SessionHeader Header { get; }
+
+        /// <summary>The file the recording becomes when completed.</summary>
+        public string Path { get; }
+
+        /// <summary>Where the frames go until then.</summary>
+        public string PartialPath { get; }
+
+        /// <summary>True until <see cref="Complete"/> or <see cref="Abandon"/>.</summary>
+        public bool IsOpen { get; private set; } = true;
+
+        /// <summary>The frames recorded so far.</summary>
+        public int FrameCount => _recorder.FrameCount;
+
+        /// <summary>
+        /// Records one frame (any clock: the session's times start at 0): every device's sample, trigger and grip, and the
+        /// frame's events (<see cref="SessionRecorder.Record"/>). Allocation-free.
+        /// </summary>
+        /// <exception cref="InvalidOperationException">The recording is closed.</exception>
+        public void Record(SessionFrame frame)
+        {
+            if (frame == null) throw new ArgumentNullException(nameof(frame));
+            if (!IsOpen) throw new InvalidOperationException("The recording is closed.");
+            _recorder.Record(frame.Time, frame.Samples, frame.Trigger, frame.Grip, frame.Events);
+        }
+
+        /// <summary>
+        /// Ends the session: writes its end line, flushes it to disk and moves it onto <see cref="Path"/> atomically.
+        /// Does nothing when already closed.
+        /// </summary>
+        /// <exception cref="IOException">The file could not be written or moved (the partial file is left in place).</exception>
+        public void Complete()
+        {
+            if (!IsOpen) return;
+            IsOpen = false;
+            try
+            {
+                _recorder.Complete();
+                _text.Flush();
+                _stream.Flush(true);
+            }
+            finally
+            {
+                _stream.Dispose();
+            }
+            if (File.Exists(Path)) File.Replace(PartialPath, Path, null);
+            else File.Move(PartialPath, Path);
+        }
+
+        /// <summary>Stops without keeping anything: the partial file is deleted and the target left as it was.</summary>
+        public void Abandon()
+        {
+            if (!IsOpen) return;
+            IsOpen = false;
+            _stream.Dispose();
+            File.Delete(PartialPath);
+        }
+
+        /// <summary>Completes the recording if it is still open.</summary>
+        public void Dispose() => Complete();
+    }
+}

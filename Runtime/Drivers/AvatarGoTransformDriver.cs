@@ -1,0 +1,69 @@
+using AvatarGo.Core;
+using UnityEngine;
+
+namespace AvatarGo
+{
+    /// <summary>
+    /// Writes the pipeline's full-body solve straight into the avatar's transforms in <c>LateUpdate</c>: the root placed and
+    /// scaled, every bound transform's local rotation and position, fingers included. For avatars without an Animator (bound
+    /// by their bones' names), and for applications that want the core's measured accuracy rather than Unity's IK (no
+    /// centre-of-mass compensation, no effector frames, nothing left to Unity). Allocation-free per frame.
+    /// </summary>
+    /// <remarks>
+    /// Runs after the Animator (<see cref="AvatarGoExecutionOrder.TransformDriver"/>), so whatever the Animator wrote is
+    /// overwritten; by default the Animator is disabled while this component is enabled, so that it does no useless work.
+    /// </remarks>
+    [AddComponentMenu("XR/AvatarGo/Transform Driver")]
+    [HelpURL(AvatarGoDocs.Manual + "transform-driver.md")]
+    [DisallowMultipleComponent]
+    [DefaultExecutionOrder(AvatarGoExecutionOrder.TransformDriver)]
+    public sealed class AvatarGoTransformDriver : MonoBehaviour
+    {
+        [SerializeField, Tooltip("The calibrator whose pipeline drives this avatar (found in the parents when empty).")]
+        private AvatarGoCalibrator m_Calibrator;
+
+        [SerializeField, Tooltip("Disable the avatar's Animator while this component drives the bones (it would only be overwritten).")]
+        private bool m_DisableAnimator = true;
+
+        private Animator _disabledAnimator;
+        private bool _failed;
+
+        /// <summary>The calibrator whose pipeline drives this avatar.</summary>
+        public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
+
+        private void OnDisable()
+        {
+            if (_disabledAnimator != null) _disabledAnimator.enabled = true;
+            _disabledAnimator = null;
+        }
+
+        private void LateUpdate()
+        {
+            if (_failed) return;
+            if (m_Calibrator == null) m_Calibrator = GetComponentInParent<AvatarGoCalibrator>();
+            if (m_Calibrator == null)
+            {
+                Fail("no calibrator is assigned or found in the parents");
+                return;
+            }
+            HumanoidBinding binding = m_Calibrator.Binding;
+            SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
+            SkeletonPose pose = pipeline?.Pose;
+            if (binding == null || pose == null || pipeline.Profile == null || binding.Root == null) return;
+            if (m_DisableAnimator && _disabledAnimator == null && m_Calibrator.Animator != null && m_Calibrator.Animator.enabled)
+            {
+                _disabledAnimator = m_Calibrator.Animator;
+                _disabledAnimator.enabled = false;
+            }
+            binding.ApplyPose(pose, m_Calibrator.TrackingSpace, pipeline.Profile.AvatarScale);
+        }
+
+        // A setup error: logged once with this component as context; the component disables itself.
+        private void Fail(string message)
+        {
+            _failed = true;
+            Debug.LogError($"{nameof(AvatarGoTransformDriver)} on '{name}': {message}. The component disables itself.", this);
+            enabled = false;
+        }
+    }
+}

@@ -1,0 +1,104 @@
+using AvatarGo.Core;
+using UnityEngine;
+
+namespace AvatarGo
+{
+    /// <summary>
+    /// Draws a controller model where the pipeline says the controller is (<see cref="HandState.ControllerPose"/>): at its
+    /// tracked pose while the avatar's hand reaches it, and in the avatar's hand, in the same grip, where the arm cannot
+    /// reach (or the controller is lost), as the paper does; the two poses meet where the hand stops reaching, so the model
+    /// does not jump either way. Any transform can be the model (the XR Interaction Toolkit's controller model, a mesh).
+    /// </summary>
+    /// <remarks>
+    /// Once calibrated, the model is re-parented under <see cref="ModelParent"/> (by default the tracking source's origin)
+    /// so that the rig's own per-frame pose updates no longer move it, and put back where it was when this component is
+    /// disabled. Its offset from the tracked device is measured on the first calibrated frame the controller is tracked and
+    /// reached (the model as the application placed it, relative to the device), or set to none. Runs in <c>LateUpdate</c>
+    /// (<see cref="AvatarGoExecutionOrder.HeldController"/>). Allocation-free per frame.
+    /// </remarks>
+    [AddComponentMenu("XR/AvatarGo/Held Controller")]
+    [HelpURL(AvatarGoDocs.Manual + "held-controller.md")]
+    [DefaultExecutionOrder(AvatarGoExecutionOrder.HeldController)]
+    public sealed class AvatarGoHeldController : MonoBehaviour
+    {
+        [SerializeField, Tooltip("The calibrator whose pipeline places the hand (found in the parents when empty).")]
+        private AvatarGoCalibrator m_Calibrator;
+
+        [SerializeField, Tooltip("Which hand holds this controller.")]
+        private BodySide m_Hand = BodySide.Right;
+
+        [SerializeField, Tooltip("The controller model to draw (any Transform).")]
+        private Transform m_Model;
+
+        [SerializeField, Tooltip("Where the model is re-parented once calibrated. Empty: the tracking source's origin (the scene when it has none).")]
+        private Transform m_ModelParent;
+
+        [SerializeField, Tooltip("Measure the model's offset from the device on the first calibrated frame it is tracked; off: the model is drawn at the device's pose.")]
+        private bool m_MeasureOffset = true;
+
+        private Transform _originalParent;
+        private bool _moved, _hasOffset, _failed;
+        private RigidPose _offset = RigidPose.Identity;
+
+        /// <summary>The calibrator whose pipeline places the hand.</summary>
+        public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
+
+        /// <summary>Which hand holds this controller.</summary>
+        public BodySide Hand { get => m_Hand; set => m_Hand = value; }
+
+        /// <summary>The controller model.</summary>
+        public Transform Model { get => m_Model; set => m_Model = value; }
+
+        /// <summary>Where the model is re-parented once calibrated (null: the tracking source's origin).</summary>
+        public Transform ModelParent { get => m_ModelParent; set => m_ModelParent = value; }
+
+        /// <summary>True while the model is drawn in the avatar's hand rather than at the tracked pose.</summary>
+        public bool DrawnInHand { get; private set; }
+
+        private void OnDisable()
+        {
+            if (_moved && m_Model != null) m_Model.SetParent(_originalParent, true);
+            _moved = false;
+            _hasOffset = false;
+        }
+
+        private void LateUpdate()
+        {
+            if (_failed || m_Model == null) return;
+            if (m_Calibrator == null) m_Calibrator = GetComponentInParent<AvatarGoCalibrator>();
+            if (m_Calibrator == null)
+            {
+                Fail("no calibrator is assigned or found in the parents");
+                return;
+            }
+            SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
+            if (pipeline == null || pipeline.State != CalibrationState.Calibrated) return;
+            HandState hand = pipeline.Hand(m_Hand);
+            TrackingSpace space = m_Calibrator.TrackingSpace;
+            RigidPose controller = space.ToWorld(hand.ControllerPose);
+            if (!_hasOffset)
+            {
+                if (m_MeasureOffset && (hand.DrawnInHand || !hand.ControllerTracked)) return; // wait for a tracked, reached frame
+                _offset = m_MeasureOffset ? m_Model.GetWorldPose().RelativeTo(controller) : RigidPose.Identity;
+                _hasOffset = true;
+            }
+            if (!_moved)
+            {
+                _originalParent = m_Model.parent;
+                Transform parent = m_ModelParent != null ? m_ModelParent : m_Calibrator.Source != null ? m_Calibrator.Source.TrackingSpaceOrigin : null;
+                m_Model.SetParent(parent, true);
+                _moved = true;
+            }
+            DrawnInHand = hand.DrawnInHand;
+            m_Model.SetWorldPose(controller * _offset);
+        }
+
+        // A setup error: logged once with this component as context; the component disables itself.
+        private void Fail(string message)
+        {
+            _failed = true;
+            Debug.LogError($"{nameof(AvatarGoHeldController)} on '{name}': {message}. The component disables itself.", this);
+            enabled = false;
+        }
+    }
+}

@@ -1,0 +1,163 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+using NUnit.Framework;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// The engine-free half of the Unity humanoid binding (HumanoidBinding): which transforms become joints, their rest
+    /// poses in the root's units whatever scales and rotations the FBX put above the hips, and how a solved pose goes back
+    /// (local rotations, the hips' local position, the root's scale) so that every bone lands where the core put it.
+    /// </summary>
+    public class HumanoidHierarchyTests
+    {
+        private static HumanoidMap Mocap(string clip) =>
+            HumanoidNaming.Detect(BvhReader.ReadFile(TestData.Mocap(clip), new BvhReadOptions { ToMetres = true }).Skeleton);
+
+        private static readonly Quaternion BlenderArmature = Rotations.AngleAxis(-90f, Vector3.UnitX);
+
+        [TestCase(1f)]
+        [TestCase(0.01f)]
+        [TestCase(100f)]
+        public void TheSkeletonKeepsThePathsToTheBonesInTheRootsUnits(float armatureScale)
+        {
+            HumanoidMap mocap = Mocap("mixamo_fingers_30fps.bvh");
+            EngineHierarchy engine = EngineHierarchy.FromSkeleton(mocap, BlenderArmature, armatureScale);
+            Assert.That(HumanoidHierarchy.TryFromBones(engine.Read(), engine.BoneNodes, 1f, out HumanoidHierarchy h, out string error), Is.True, error);
+
+            Assert.That(h.Skeleton.GetName(0), Is.EqualTo("Avatar"), "joint 0 is the Animator's own transform");
+            Assert.That(h.Skeleton.IndexOf("Body"), Is.EqualTo(-1), "a mesh object beside the bones is not a joint");
+            Assert.That(h.Skeleton.IndexOf("Armature"), Is.GreaterThan(0), "the node between the root and the hips is");
+            Assert.That(h.Skeleton.GetRestLocal(0), Is.EqualTo(RigidPose.Identity), "the root rests at the identity: the pipeline places it");
+            var fk = new RigidPose[h.JointCount];
+            var rest = new RigidPose[h.JointCount];
+            h.Skeleton.GetRestLocal(rest);
+            h.Skeleton.ComputeWorld(rest, fk);
+            for (int j = 0; j < h.JointCount; j++)
+            {
+                int node = h.NodeOf(j);
+                Approx.Near(engine.WorldPosition(node), fk[j].Position, 1e-5f, h.Skeleton.GetName(j));
+                Approx.Near(engine.WorldRotation(node), fk[j].Rotation, 0.01f, h.Skeleton.GetName(j));
+                if (j > 0) Assert.That(h.Skeleton.GetRestLocal(j).Rotation, Is.EqualTo(Quaternion.Normalize(engine.LocalRotations[node])), "core local rotations are the transforms' own");
+            }
+            for (int b = 0; b < HumanoidBones.Count; b++)
+                if (engine.BoneNodes[b] >= 0) Assert.That(h.NodeOf(h.Map[(HumanoidBone)b]), Is.EqualTo(engine.BoneNodes[b]), ((HumanoidBone)b).ToString());
+        }
+
+        [Test]
+        public void TheFingerTipsAndToeEndsAreKeptAsEndPoints()
+        {
+            HumanoidMap mocap = Mocap("mixamo_fingers_30fps.bvh");
+            EngineHierarchy engine = EngineHierarchy.FromSkeleton(mocap, Quaternion.Identity, 1f);
+            int[] bones = (int[])engine.BoneNodes.Clone();
+            Assert.That(HumanoidHierarchy.TryFromBones(engine.Read(), bones, 1f, out HumanoidHierarchy h, out string error), Is.True, error);
+            int distal = h.Map[HumanoidBone.LeftIndexDistal];
+            int tips = 0;
+            for (int j = 0; j < h.JointCount; j++)
+                if (h.Skeleton.GetParent(j) == distal) { tips++; Assert.That(h.Skeleton.IsEndSite(j), Is.True); }
+            Assert.That(tips, Is.EqualTo(1), "the index tip below the distal phalanx");
+            Assert.That(h.JointsBelow(HumanoidBone.LeftHand), Has.Length.EqualTo(15 + 5), "three phalanges and a tip per finger");
+            Assert.That(HandModel.CanModel(h.Map, BodySide.Left, out string reason), Is.True, reason);
+        }
+
+        [Test]
+        public void NamesThatRepeatAreMadeUnique()
+        {
+            HumanoidMap mocap = Mocap("mocapbank_30fps.bvh");
+            EngineHierarchy engine = EngineHierarchy.FromSkeleton(mocap, Quaternion.Identity, 1f);
+            engine.Names[engine.BoneNodes[(int)HumanoidBone.LeftHand]] = "Hand";
+            engine.Names[engine.BoneNodes[(int)HumanoidBone.RightHand]] = "Hand";
+            Assert.That(HumanoidHierarchy.TryFromBones(engine.Read(), engine.BoneNodes, 1f, out HumanoidHierarchy h, out string error), Is.True, error);
+            Assert.That(h.Map.NameOf(HumanoidBone.LeftHand), Is.Not.EqualTo(h.Map.NameOf(HumanoidBone.RightHand)));
+        }
+
+        [Test]
+        public void HierarchiesThatCannotBeBoundSayWhy()
+        {
+            HumanoidMap mocap = Mocap("mocapbank_30fps.bvh");
+            EngineHierarchy engine = EngineHierarchy.FromSkeleton(mocap, Quaternion.Identity, 1f);
+            string Why(Action<EngineHierarchy, int[]> plant)
+            {
+                EngineHierarchy e = EngineHierarchy.FromSkeleton(mocap, Quaternion.Identity, 1f);
+                int[] bones = (int[])e.BoneNodes.Clone();
+                plant(e, bones);
+                Assert.That(HumanoidHierarchy.TryFromBones(e.Read(), bones, 1f, out HumanoidHierarchy h, out string error), Is.False);
+                Assert.That(h, Is.Null);
+                return error;
+            }
+            Assert.That(Why((e, b) => e.LocalScales[2] = new Vector3(1f, 2f, 1f)), Does.Contain("'Armature' has the scale (1, 2, 1)"));
+            Assert.That(Why((e, b) => e.LocalScales[b[(int)HumanoidBone.Spine]] = new Vector3(-1f)), Does.Contain("uniform, positive scales"));
+            Assert.That(Why((e, b) => b[(int)HumanoidBone.RightHand] = b[(int)HumanoidBone.LeftHand]), Does.Contain("plays both LeftHand and RightHand"));
+            Assert.That(Why((e, b) => b[(int)HumanoidBone.Head] = -1), Does.Contain("lacks required humanoid bones: Head"));
+            Assert.That(Why((e, b) => e.Parents[3] = 7), Does.Contain("must be depth-first"));
+            Assert.That(Why((e, b) => e.LocalRotations[3] = new Quaternion(float.NaN, 0, 0, 1)), Does.Contain("non-finite local pose"));
+            Assert.That(HumanoidHierarchy.TryFromBones(engine.Read(), engine.BoneNodes, 0f, out _, out string scale), Is.False);
+            Assert.That(scale, Does.Contain("must be positive"));
+            Assert.Throws<ArgumentException>(() => HumanoidHierarchy.TryFromBones(engine.Read(), new int[3], 1f, out _, out _));
+        }
+
+        [Test]
+        public void WithoutABoneMapTheNamesFindTheBones()
+        {
+            HumanoidMap mocap = Mocap("mixamo_fingers_30fps.bvh");
+            EngineHierarchy engine = EngineHierarchy.FromSkeleton(mocap, BlenderArmature, 0.01f);
+            Assert.That(HumanoidHierarchy.TryFromNames(engine.Read(), 1f, out HumanoidHierarchy h, out string error), Is.True, error);
+            Assert.That(h.JointCount, Is.EqualTo(engine.Names.Count), "every transform is a joint");
+            foreach (HumanoidBone b in HumanoidBones.Required)
+                Assert.That(h.NodeOf(h.Map[b]), Is.EqualTo(engine.BoneNodes[(int)b]), b.ToString());
+            var bare = new EngineHierarchy();
+            bare.Add("Root", -1, Vector3.Zero, Quaternion.Identity);
+            bare.Add("Cube", 0, Vector3.UnitY, Quaternion.Identity);
+            Assert.That(HumanoidHierarchy.TryFromNames(bare.Read(), 1f, out _, out error), Is.False);
+            Assert.That(error, Does.StartWith("the avatar lacks required humanoid bones: ").And.Contain("LeftUpperLeg"));
+        }
+
+        // The TransformDriver's twin: the pipeline's pose (walk-in T-pose, then the solve) written back as the binding does
+        // it puts every bone of the engine hierarchy where the core's pose has it.
+        [TestCase(1f)]
+        [TestCase(0.01f)]
+        public void ASolvedPoseWrittenBackPutsEveryBoneWhereTheCorePutsIt(float armatureScale)
+        {
+            HumanoidMap mocap = Mocap("mixamo_fingers_30fps.bvh");
+            EngineHierarchy engine = EngineHierarchy.FromSkeleton(mocap, BlenderArmature, armatureScale);
+            engine.LocalScales[0] = new Vector3(1.5f); // the avatar's root was scaled in the scene
+            Assert.That(HumanoidHierarchy.TryFromBones(engine.Read(), engine.BoneNodes, 1.5f, out HumanoidHierarchy h, out string error), Is.True, error);
+            var settings = new PipelineSettings();
+            settings.LeftHand.Controller = settings.RightHand.Controller = ControllerProfile.Parse(System.IO.File.ReadAllText(TestData.InPackage("Runtime/ControllerProfiles/vive-wand.json")));
+            string session = Sessions.Simulate("mocapbank_30fps.bvh");
+            var space = new TrackingSpace(new RigidPose(new Vector3(2f, 0.5f, -3f), Rotations.AngleAxis(30f, Vector3.UnitY)), 1.25f);
+            Vector3 bindScale = engine.LocalScales[0];
+            float worst = 0f;
+            int frames = 0, walkIn = 0;
+            using (SessionReader reader = Sessions.Read(session))
+            {
+                var pipeline = new SelfAvatarPipeline(reader.Header.Devices, h.Map, settings);
+                SessionFrame frame = reader.CreateFrame();
+                while (reader.ReadFrame(frame))
+                {
+                    pipeline.Update(frame);
+                    SkeletonPose pose = pipeline.Pose;
+                    if (pose == null) continue;
+                    if (pipeline.State == CalibrationState.WalkIn) walkIn++;
+                    float s = pipeline.Profile.AvatarScale;
+                    RigidPose root = space.ToWorld(pose.World[0]);
+                    engine.LocalPositions[0] = root.Position;
+                    engine.LocalRotations[0] = root.Rotation;
+                    engine.LocalScales[0] = bindScale * h.RootScaleFactor(s, space.Scale);
+                    for (int j = 1; j < h.JointCount; j++)
+                    {
+                        engine.LocalRotations[h.NodeOf(j)] = pose.Local[j].Rotation;
+                        engine.LocalPositions[h.NodeOf(j)] = h.ToLocalPosition(j, pose.Local[j].Position, s);
+                    }
+                    if (frames++ % 10 != 0) continue;
+                    for (int j = 0; j < h.JointCount; j++)
+                        worst = Math.Max(worst, Vector3.Distance(engine.WorldPosition(h.NodeOf(j)), space.ToWorld(pose.World[j].Position)));
+                }
+                Assert.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated));
+            }
+            Assert.That(walkIn, Is.GreaterThan(10), "the walk-in's T-pose was written too");
+            Assert.That(worst, Is.LessThan(1e-4f), "every bone, fingers included, where the core's pose has it (world units)");
+        }
+    }
+}

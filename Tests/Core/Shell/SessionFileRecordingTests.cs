@@ -1,0 +1,129 @@
+using System;
+using System.IO;
+using System.Numerics;
+using NUnit.Framework;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// The engine-free half of AvatarGoRecorder: a recording streamed to a partial file and moved onto its name when
+    /// completed reads back with the session reader as it was fed; until then the target is untouched, and an interrupted
+    /// recording leaves its frames readable up to the point where it stopped.
+    /// </summary>
+    public class SessionFileRecordingTests
+    {
+        private string _dir;
+
+        [SetUp]
+        public void CreateFolder() => Directory.CreateDirectory(_dir = Path.Combine(Path.GetTempPath(), "avatargo-recording-" + Guid.NewGuid().ToString("N")));
+
+        [TearDown]
+        public void DeleteFolder() => Directory.Delete(_dir, true);
+
+        [Test]
+        public void ACompletedRecordingReadsBackAsItWasFed()
+        {
+            string session = Sessions.Simulate("mocapbank_30fps.bvh");
+            string path = Path.Combine(_dir, "sub", AvatarGoFiles.RecordingFileName("test", new DateTime(2024, 5, 6, 7, 8, 9)));
+            Assert.That(Path.GetFileName(path), Is.EqualTo("test-20240506-070809.agsession"));
+            int fed = 0;
+            using (SessionReader source = Sessions.Read(session))
+            {
+                var recording = new SessionFileRecording(path, source.Header);
+                Assert.That(File.Exists(recording.PartialPath), Is.True);
+                SessionFrame frame = source.CreateFrame();
+                while (source.ReadFrame(frame))
+                {
+                    frame.Time += 1000.0; // a live clock: the recording starts at 0
+                    recording.Record(frame);
+                    fed++;
+                }
+                Assert.That(File.Exists(path), Is.False, "nothing at the target until completed");
+                recording.Complete();
+                Assert.That(recording.IsOpen, Is.False);
+                Assert.That(File.Exists(recording.PartialPath), Is.False);
+            }
+            using SessionReader original = Sessions.Read(session);
+            using SessionReader copy = SessionReader.Open(path);
+            Assert.That(copy.Header.Devices.Count, Is.EqualTo(original.Header.Devices.Count));
+            SessionFrame a = original.CreateFrame(), b = copy.CreateFrame();
+            int frames = 0, events = 0;
+            while (original.ReadFrame(a))
+            {
+                Assert.That(copy.ReadFrame(b), Is.True);
+                Assert.That(b.Time, Is.EqualTo(a.Time).Within(1e-6), "times start at 0 like the original's");
+                for (int d = 0; d < a.Samples.Length; d++)
+                {
+                    Assert.That(b.Samples[d].IsTracked, Is.EqualTo(a.Samples[d].IsTracked));
+                    if (a.Samples[d].IsTracked) Assert.That(b.Samples[d].Pose, Is.EqualTo(a.Samples[d].Pose));
+                    Assert.That(b.Trigger[d], Is.EqualTo(a.Trigger[d]));
+                    Assert.That(b.Grip[d], Is.EqualTo(a.Grip[d]));
+                }
+                Assert.That(b.Events, Is.EqualTo(a.Events));
+                events += a.Events.Count;
+                frames++;
+            }
+            Assert.That(copy.ReadFrame(b), Is.False);
+            Assert.That(frames, Is.EqualTo(fed));
+            Assert.That(events, Is.GreaterThanOrEqualTo(2), "the calibration's presses were recorded");
+        }
+
+        [Test]
+        public void CompletingReplacesAnOlderFileOfTheSameName()
+        {
+            string path = Path.Combine(_dir, "take.agsession");
+            File.WriteAllText(path, "an older take");
+            var header = new SessionHeader(90f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "H") });
+            using (var recording = new SessionFileRecording(path, header))
+            {
+                var frame = new SessionFrame(header);
+                frame.Samples[0] = new DeviceSample(RigidPose.FromPosition(Vector3.UnitY), true);
+                recording.Record(frame);
+                Assert.That(File.ReadAllText(path), Is.EqualTo("an older take"), "the older take stays until the new one is whole");
+            }
+            using SessionReader reader = SessionReader.Open(path);
+            SessionFrame f = reader.CreateFrame();
+            Assert.That(reader.ReadFrame(f), Is.True);
+            Assert.That(reader.ReadFrame(f), Is.False);
+        }
+
+        [Test]
+        public void AnInterruptedRecordingLeavesItsFramesAndTheTargetUntouched()
+        {
+            string path = Path.Combine(_dir, "crash.agsession");
+            var header = new SessionHeader(90f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "H") });
+            var recording = new SessionFileRecording(path, header);
+            var frame = new SessionFrame(header);
+            for (int i = 0; i < 5000; i++)
+            {
+                frame.Time = i / 90.0;
+                frame.Samples[0] = new DeviceSample(RigidPose.FromPosition(new Vector3(0, 1.6f, i * 1e-3f)), true);
+                recording.Record(frame);
+            }
+            // A crash: the process ends without Complete. What reached the disk is read as it would be afterwards.
+            var written = new MemoryStream();
+            using (var s = new FileStream(recording.PartialPath, FileMode.Open, FileAccess.Read, FileShare.ReadWrite)) s.CopyTo(written);
+            Assert.That(File.Exists(path), Is.False, "the target never existed");
+            using (var reader = new SessionReader(new StringReader(System.Text.Encoding.UTF8.GetString(written.ToArray())), "crash.agsession.partial"))
+            {
+                SessionFrame f = reader.CreateFrame();
+                int read = 0;
+                var e = Assert.Throws<FormatException>(() => { while (reader.ReadFrame(f)) read++; });
+                Assert.That(e.Message, Does.Contain("truncated").Or.Contain("crash.agsession.partial"));
+                Assert.That(read, Is.GreaterThan(4000), "all but the last buffers' frames are readable");
+            }
+            recording.Abandon();
+            Assert.That(File.Exists(recording.PartialPath), Is.False);
+            Assert.Throws<InvalidOperationException>(() => recording.Record(frame));
+        }
+
+        [Test]
+        public void ASerialTheFormatCannotHoldIsRefusedWithoutLeavingAFile()
+        {
+            string path = Path.Combine(_dir, "bad.agsession");
+            var header = new SessionHeader(90f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "has space") });
+            Assert.Throws<ArgumentException>(() => new SessionFileRecording(path, header));
+            Assert.That(Directory.GetFiles(_dir), Is.Empty);
+        }
+    }
+}

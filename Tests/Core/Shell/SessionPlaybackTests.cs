@@ -1,0 +1,151 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Numerics;
+using NUnit.Framework;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// The engine-free half of RecordedSessionTrackingSource: a session played in real time (the newest frame at the
+    /// playback clock, no trigger press lost when frames are skipped), stepped one frame at a time, looped with times that
+    /// keep increasing, and a whole recorded session driven through the pipeline to a calibration.
+    /// </summary>
+    public class SessionPlaybackTests
+    {
+        // Ten frames at 10 Hz of one controller, a press on frame 3 and a release on frame 4.
+        private static string Tiny()
+        {
+            var header = new SessionHeader(10f, new[] { new DeviceInfo(5, DeviceClass.Controller, "C") });
+            var text = new StringWriter();
+            using (var writer = new SessionWriter(text, header))
+            {
+                var frame = new SessionFrame(header);
+                for (int i = 0; i < 10; i++)
+                {
+                    frame.Clear();
+                    frame.Time = i * 0.1;
+                    frame.Samples[0] = new DeviceSample(RigidPose.FromPosition(new Vector3(i, 0, 0)), true);
+                    frame.Trigger[0] = i / 10f;
+                    if (i == 3) frame.Events.Add(new DeviceEvent(5, DeviceEventKind.TriggerPressed));
+                    if (i == 4) frame.Events.Add(new DeviceEvent(5, DeviceEventKind.TriggerReleased));
+                    writer.WriteFrame(frame);
+                }
+            }
+            return text.ToString();
+        }
+
+        private static SessionPlayback Play(string session, bool loop = false) => new SessionPlayback(() => Sessions.Read(session), loop);
+
+        [Test]
+        public void RealTimeDeliversTheNewestFrameAtTheClockAndEveryEventOnce()
+        {
+            using SessionPlayback playback = Play(Tiny());
+            var output = new SessionFrame(playback.Header);
+            var seen = new List<float>();
+            var events = new List<DeviceEventKind>();
+            // 30 Hz rendering of a 10 Hz recording: frames repeat; then a 2 Hz hiccup skips four frames at once.
+            double[] steps = { 0, 1 / 30.0, 1 / 30.0, 1 / 30.0, 0.5, 1 / 30.0 };
+            foreach (double dt in steps)
+            {
+                playback.Advance(dt, output);
+                seen.Add(output.Samples[0].Pose.Position.X);
+                foreach (DeviceEvent e in output.Events) events.Add(e.Kind);
+            }
+            Assert.That(seen, Is.EqualTo(new[] { 0f, 0f, 0f, 1f, 6f, 6f }));
+            Assert.That(events, Is.EqualTo(new[] { DeviceEventKind.TriggerPressed, DeviceEventKind.TriggerReleased }),
+                "the press and the release of the skipped frames come with the frame that skipped them, once");
+            Assert.That(output.Time, Is.EqualTo(0.6).Within(1e-9));
+            Assert.That(output.Trigger[0], Is.EqualTo(0.6f));
+        }
+
+        [Test]
+        public void SteppingDeliversEveryFrameInTurnThenHoldsTheLast()
+        {
+            using SessionPlayback playback = Play(Tiny());
+            var output = new SessionFrame(playback.Header);
+            int presses = 0;
+            for (int i = 0; i < 10; i++)
+            {
+                Assert.That(playback.Step(output), Is.True);
+                Assert.That(output.Samples[0].Pose.Position.X, Is.EqualTo((float)i));
+                Assert.That(output.Time, Is.EqualTo(i * 0.1).Within(1e-9));
+                if (output.Events.Count > 0 && output.Events[0].Kind == DeviceEventKind.TriggerPressed) presses++;
+            }
+            Assert.That(presses, Is.EqualTo(1));
+            Assert.That(playback.Step(output), Is.False);
+            Assert.That(playback.Finished, Is.True);
+            Assert.That(output.Samples[0].Pose.Position.X, Is.EqualTo(9f), "the last frame is held");
+            Assert.That(output.Events, Is.Empty);
+            playback.Advance(1.0, output);
+            Assert.That(output.Samples[0].Pose.Position.X, Is.EqualTo(9f));
+        }
+
+        [Test]
+        public void ASecondReadInTheSameFrameRepeatsTheFrameWithoutItsEvents()
+        {
+            using SessionPlayback playback = Play(Tiny());
+            var output = new SessionFrame(playback.Header);
+            playback.Repeat(output);
+            Assert.That(output.Samples[0].Pose.Position.X, Is.EqualTo(0f), "before anything else: the first frame");
+            for (int i = 0; i < 3; i++) playback.Step(output);
+            Assert.That(output.Events, Has.Count.EqualTo(1), "frame 3's press");
+            playback.Repeat(output);
+            Assert.That(output.Samples[0].Pose.Position.X, Is.EqualTo(3f));
+            Assert.That(output.Time, Is.EqualTo(0.3).Within(1e-9));
+            Assert.That(output.Events, Is.Empty, "the press went with the first delivery");
+        }
+
+        [Test]
+        public void LoopingStartsAgainWithTimesThatKeepIncreasing()
+        {
+            using SessionPlayback playback = Play(Tiny(), loop: true);
+            var output = new SessionFrame(playback.Header);
+            double last = double.NegativeInfinity;
+            int presses = 0;
+            for (int i = 0; i < 25; i++)
+            {
+                Assert.That(playback.Step(output), Is.True);
+                Assert.That(output.Time, Is.GreaterThan(last));
+                last = output.Time;
+                foreach (DeviceEvent e in output.Events) if (e.Kind == DeviceEventKind.TriggerPressed) presses++;
+            }
+            Assert.That(output.Samples[0].Pose.Position.X, Is.EqualTo(4f), "frame 24 is the fifth of the third pass");
+            Assert.That(output.Time, Is.EqualTo(2.4).Within(1e-9));
+            Assert.That(presses, Is.EqualTo(3));
+            Assert.That(playback.Finished, Is.False);
+            for (int i = 0; i < 20; i++) playback.Advance(0.05, output);
+            Assert.That(output.Time, Is.EqualTo(3.4).Within(1e-9), "real time continues across loops too");
+        }
+
+        [Test]
+        public void ATruncatedSessionThrowsAFormatExceptionNamingTheLine()
+        {
+            string tiny = Tiny();
+            string truncated = tiny.Substring(0, tiny.IndexOf("frame 0.5", StringComparison.Ordinal));
+            using SessionPlayback playback = Play(truncated);
+            var output = new SessionFrame(playback.Header);
+            for (int i = 0; i < 4; i++) Assert.That(playback.Step(output), Is.True);
+            var e = Assert.Throws<FormatException>(() => playback.Step(output));
+            Assert.That(e.Message, Does.Contain("truncated"));
+            Assert.Throws<FormatException>(() => new SessionPlayback(() => Sessions.Read("avatargo-session 1.0\n"), false));
+        }
+
+        [Test]
+        public void ARecordedSessionPlayedInRealTimeCalibratesThePipeline()
+        {
+            string session = Sessions.Simulate("mocapbank_30fps.bvh");
+            using SessionPlayback playback = Play(session);
+            var output = new SessionFrame(playback.Header);
+            SelfAvatarPipeline pipeline = null;
+            using (SessionReader r = Sessions.Read(session)) pipeline = new SelfAvatarPipeline(r.Header.Devices, r.Header.TruthHumanoid);
+            // 72 Hz rendering of the 90 Hz session: a fifth of the recorded frames are skipped, their presses are not.
+            while (!playback.Finished)
+            {
+                playback.Advance(1 / 72.0, output);
+                pipeline.Update(output);
+            }
+            Assert.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated));
+        }
+    }
+}
