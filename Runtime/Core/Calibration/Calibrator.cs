@@ -261,6 +261,8 @@ namespace AvatarGo.Core
             ProportionFit fit = ProportionFitter.Fit(_avatar, BodyFeatures.Mean(_tposeFeatures, walkIn), _settings.Proportions, 0.5f * difference, 2);
             Profile.Measurements = fit.Measurements;
             if (_settings.Proportions.Mode != ScaleMode.Fitted) return null;
+            // Proportions still uniform: the T-pose's scale stays (the paper's), so fitting changes nothing for such a wearer.
+            if (fit.Proportions.IsUniform && Profile.Proportions.IsUniform) return "refitted to the T-pose and the walk-in: " + fit.Explanation;
             if (!fit.Proportions.Equals(Profile.Proportions) || fit.Scale != Profile.AvatarScale)
             {
                 ShowAvatar(fit.Scale, Profile.Placement, fit.Proportions);

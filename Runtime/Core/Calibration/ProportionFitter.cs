@@ -108,6 +108,24 @@ namespace AvatarGo.Core
             return fit;
         }
 
+        /// <summary>
+        /// The measurements of a skeleton itself (no uncertainty): its lengths, and heights in its canonical T-pose
+        /// (<see cref="TPoser"/>). What a wearer's measurements are compared with in evaluation, and what a fitted avatar shows.
+        /// </summary>
+        public static BodyMeasurements MeasureSkeleton(HumanoidMap map)
+        {
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            map.RequireComplete(nameof(map));
+            AvatarShape m = Shape(map, BodyProportions.Uniform, 1f);
+            return new BodyMeasurements
+            {
+                EyeHeight = new Measurement(m.Features.Eye, 0f), HipHeight = new Measurement(m.Features.Hips, 0f),
+                LeftLegLength = new Measurement(m.LeftLeg, 0f), RightLegLength = new Measurement(m.RightLeg, 0f),
+                ShoulderHeight = new Measurement(m.ShoulderHeight, 0f), ShoulderWidth = new Measurement(m.ShoulderWidth, 0f),
+                ArmSpan = new Measurement(m.ArmSpan, 0f), LeftArmLength = new Measurement(m.LeftArm, 0f), RightArmLength = new Measurement(m.RightArm, 0f),
+            };
+        }
+
         private static float Limit(float ratio, ProportionSettings settings) => Math.Min(settings.MaxRatio, Math.Max(settings.MinRatio, ratio));
 
         // Fixed-point iteration: each free ratio moved so its part of the feature matches, then the overall scale so the
