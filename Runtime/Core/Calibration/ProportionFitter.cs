@@ -152,9 +152,12 @@ namespace AvatarGo.Core
                     if (perSide) { la = l; ra = r; }
                     else la = ra = 0.5f * (l + r);
                 }
+                bool settled = Math.Abs(leg - p.LeftLeg) < 1e-5f && Math.Abs(la - p.LeftArm) < 1e-5f && Math.Abs(ra - p.RightArm) < 1e-5f;
                 p = new BodyProportions(leg, leg, la, ra);
-                shape = Shape(avatar, p, s);
-                s *= wearer.Eye / shape.Features.Eye;
+                if (!settled) shape = Shape(avatar, p, s);
+                float eyeRatio = wearer.Eye / shape.Features.Eye;
+                if (settled && Math.Abs(eyeRatio - 1f) < 1e-6f) break; // converged: nothing moved this round
+                s *= eyeRatio;
                 shape = Shape(avatar, p, s);
             }
             finalScale = s;
