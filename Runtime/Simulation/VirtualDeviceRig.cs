@@ -95,22 +95,8 @@ namespace AvatarGo.Simulation
         /// as the T-pose holds them; the hand is 0.36 of the forearm long (wrist to middle knuckle, typical proportions), and
         /// the palm centre is <see cref="HandModel.GripAlongPalm"/> of the way along it, one finger radius out of the palm.
         /// </summary>
-        public static void PalmWithoutFingers(HumanoidMap wearer, SkeletonPose tpose, BodySide side, out Vector3 palmCentre, out Vector3 normal, out Vector3 across)
-        {
-            if (wearer == null) throw new ArgumentNullException(nameof(wearer));
-            if (tpose == null) throw new ArgumentNullException(nameof(tpose));
-            RigidPose[] w = tpose.World;
-            Vector3 wrist = w[wearer[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]].Position;
-            Vector3 elbow = w[wearer[HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side)]].Position;
-            int landmark = TPoser.HandLandmark(wearer, side);
-            Vector3 outward = side == BodySide.Left ? -Vector3.UnitX : Vector3.UnitX;
-            Vector3 along = Vectors.NormalizeOr(landmark >= 0 ? w[landmark].Position - wrist : wrist - elbow, outward);
-            normal = Vectors.NormalizeOr(Vectors.ProjectOnPlane(-Vector3.UnitY, along), -Vector3.UnitY);
-            across = side == BodySide.Left ? Vector3.Cross(along, normal) : Vector3.Cross(normal, along);
-            float handLength = 0.36f * Vector3.Distance(wrist, elbow);
-            float fingerRadius = 0.0085f * handLength / 0.095f;
-            palmCentre = wrist + along * (HandModel.GripAlongPalm * handLength) + normal * fingerRadius;
-        }
+        public static void PalmWithoutFingers(HumanoidMap wearer, SkeletonPose tpose, BodySide side, out Vector3 palmCentre, out Vector3 normal, out Vector3 across) =>
+            HandModel.PalmWithoutFingers(wearer, tpose, side, out palmCentre, out normal, out across);
 
         /// <summary>The wearer's skeleton and humanoid map.</summary>
         public HumanoidMap Wearer { get; }

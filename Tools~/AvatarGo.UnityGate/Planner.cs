@@ -191,6 +191,7 @@ public sealed class Planner
     public static string SurfaceAbsence(SurfaceAssembly s, UnityConfiguration config)
     {
         if (s.Package != null && !config.HasPackage(s.Package)) return $"{s.Package} is not in the project";
+        if (s.ImportedIntoAssets && !config.AssetsAssemblies.Contains(s.Name)) return $"the plug-in providing {s.Name} is not imported into Assets";
         if (s.EditorOnly && !config.Editor) return "an Editor-only assembly does not exist in a player build";
         return null;
     }
@@ -204,8 +205,7 @@ public sealed class Planner
             .Select(f => Path.GetRelativePath(_packageRoot, f).Replace('\\', '/'))
             .OrderBy(f => f, StringComparer.Ordinal).ToList();
         // The surface sees the editor version (UNITY_X_Y_OR_NEWER) and UNITY_EDITOR, to declare what differs between versions.
-        var defines = new SortedSet<string>(UnityConfiguration.VersionSymbols(config.Unity), StringComparer.Ordinal);
-        if (config.Editor) defines.Add("UNITY_EDITOR");
+        var defines = SurfaceDefines(s, config);
         var references = s.References.Where(r => SurfaceAbsence(UnityCatalog.Surface(r), config) == null).ToList();
         var precompiled = new List<string>();
         if (s.UsesNUnit) precompiled.Add(NUnitPath(config));
@@ -222,6 +222,18 @@ public sealed class Planner
             EditorOnly = s.EditorOnly,
             Notes = new[] { "compile-only Unity API surface: " + s.Source },
         };
+    }
+
+    /// <summary>
+    /// The symbols a surface assembly is compiled with: the editor's version symbols, UNITY_EDITOR in the Editor, and its
+    /// own versionDefines (<see cref="SurfaceAssembly.VersionDefines"/>) evaluated against the configuration's packages.
+    /// </summary>
+    public static SortedSet<string> SurfaceDefines(SurfaceAssembly s, UnityConfiguration config)
+    {
+        var defines = new SortedSet<string>(UnityConfiguration.VersionSymbols(config.Unity), StringComparer.Ordinal);
+        if (config.Editor) defines.Add("UNITY_EDITOR");
+        defines.UnionWith(VersionDefines(s.VersionDefines, "Tools~/AvatarGo.UnityGate/UnityCatalog.cs (" + s.Name + ")", config));
+        return defines;
     }
 
     private string PrecompiledPath(Asmdef a, string dll, UnityConfiguration config)
@@ -245,9 +257,12 @@ public sealed class Planner
     /// "Unity") is absent adds nothing; an empty expression adds its symbol whenever the resource is present;
     /// otherwise the expression must match the resource's version.
     /// </summary>
-    public static IEnumerable<string> VersionDefines(Asmdef a, UnityConfiguration config)
+    public static IEnumerable<string> VersionDefines(Asmdef a, UnityConfiguration config) => VersionDefines(a.VersionDefines, a.Path, config);
+
+    /// <summary>The symbols a list of versionDefines adds in a configuration (see the overload for an asmdef); <paramref name="where"/> names them in errors.</summary>
+    public static IEnumerable<string> VersionDefines(IEnumerable<VersionDefine> versionDefines, string where, UnityConfiguration config)
     {
-        foreach (VersionDefine vd in a.VersionDefines)
+        foreach (VersionDefine vd in versionDefines)
         {
             bool unity = vd.Resource == "Unity";
             if (!unity && !config.HasPackage(vd.Resource)) continue;
@@ -264,7 +279,7 @@ public sealed class Planner
             }
             catch (FormatException e)
             {
-                throw new GateException($"{a.Path}: versionDefines entry for {vd.Resource} ({vd.Define}): {e.Message}");
+                throw new GateException($"{where}: versionDefines entry for {vd.Resource} ({vd.Define}): {e.Message}");
             }
             bool match = unity ? range.Contains(config.Unity) : range.Contains(SemanticVersion.Parse(config.PackageVersion(vd.Resource)));
             if (match) yield return vd.Define;

@@ -37,16 +37,24 @@ public static class SurfaceUsage
         string surfaceRoot = Path.Combine(packageRoot, "Tools~", "UnitySurface");
         foreach (UnityConfiguration config in configurations)
         {
-            var symbols = UnityConfiguration.VersionSymbols(config.Unity).Append("UNITY_EDITOR").ToArray();
-            var options = new CSharpParseOptions(LanguageVersion.CSharp9, preprocessorSymbols: symbols);
+            // Each surface is compiled against the ones it references (SteamVR's names Unity.XR.OpenVR's types), so that the
+            // ids of members whose signatures name another surface's types resolve as in the package's compilations.
+            var compiled = new Dictionary<string, CSharpCompilation>(StringComparer.Ordinal);
             foreach (SurfaceAssembly assembly in UnityCatalog.SurfaceAssemblies)
             {
+                // As the surface is compiled in this configuration (its own versionDefines included), but always with
+                // UNITY_EDITOR, so that the Editor-only declarations are seen too.
+                var symbols = Planner.SurfaceDefines(assembly, config).Append("UNITY_EDITOR").ToArray();
+                var options = new CSharpParseOptions(LanguageVersion.CSharp9, preprocessorSymbols: symbols);
                 string dir = Path.Combine(surfaceRoot, assembly.Name);
-                if (!Directory.Exists(dir)) continue;
-                var trees = Directory.GetFiles(dir, "*.cs", SearchOption.AllDirectories).OrderBy(f => f, StringComparer.Ordinal)
+                var trees = (Directory.Exists(dir) ? Directory.GetFiles(dir, "*.cs", SearchOption.AllDirectories) : Array.Empty<string>())
+                    .OrderBy(f => f, StringComparer.Ordinal)
                     .Select(f => CSharpSyntaxTree.ParseText(File.ReadAllText(f), options, f)).ToList();
-                var compilation = CSharpCompilation.Create(assembly.Name, trees, TargetingPack.NetStandard21,
+                var references = TargetingPack.NetStandard21.Concat(assembly.References
+                    .Where(compiled.ContainsKey).Select(r => (MetadataReference)compiled[r].ToMetadataReference()));
+                var compilation = CSharpCompilation.Create(assembly.Name, trees, references,
                     new CSharpCompilationOptions(OutputKind.DynamicallyLinkedLibrary));
+                compiled[assembly.Name] = compilation;
                 foreach (SyntaxTree tree in trees)
                 {
                     SemanticModel model = compilation.GetSemanticModel(tree);
@@ -158,14 +166,7 @@ public static class SurfaceUsage
             if (s is IFieldSymbol { ContainingType.TypeKind: TypeKind.Enum } enumValue) s = enumValue.ContainingType;
             string id = s.GetDocumentationCommentId();
             if (id != null) used.Add(id);
-            // C# only accepts some operators in pairs (CS0216): using one keeps its partner.
-            if (s is IMethodSymbol { MethodKind: MethodKind.UserDefinedOperator } op && PairedOperators.TryGetValue(op.Name, out string partner))
-                foreach (ISymbol p in op.ContainingType.GetMembers(partner))
-                    if (p.GetDocumentationCommentId() is string pid) used.Add(pid);
-            for (INamedTypeSymbol t = s as INamedTypeSymbol ?? s.ContainingType; t != null; t = t.ContainingType ?? t.BaseType)
-                if (t.ContainingAssembly != null && surfaceNames.Contains(t.ContainingAssembly.Name)) used.Add(t.GetDocumentationCommentId());
-            // The types in a used member's signature must be declared for it to compile (an event's delegate type, a
-            // property's type, a method's return and parameter types), even when the package never names them.
+            // The types a used member's signature names exist with it (CommonUsages.devicePosition is an InputFeatureUsage<Vector3>).
             switch (s)
             {
                 case IMethodSymbol m:
@@ -174,24 +175,42 @@ public static class SurfaceUsage
                     break;
                 case IPropertySymbol p:
                     AddType(p.Type);
-                    break;
-                case IEventSymbol ev:
-                    AddType(ev.Type);
+                    foreach (IParameterSymbol ip in p.Parameters) AddType(ip.Type);
                     break;
                 case IFieldSymbol f:
                     AddType(f.Type);
                     break;
+                case IEventSymbol e:
+                    AddType(e.Type);
+                    break;
+            }
+            // C# only accepts some operators in pairs (CS0216): using one keeps its partner.
+            if (s is IMethodSymbol { MethodKind: MethodKind.UserDefinedOperator } op && PairedOperators.TryGetValue(op.Name, out string partner))
+                foreach (ISymbol p in op.ContainingType.GetMembers(partner))
+                    if (p.GetDocumentationCommentId() is string pid) used.Add(pid);
+            for (INamedTypeSymbol t = s as INamedTypeSymbol ?? s.ContainingType; t != null; t = t.ContainingType ?? t.BaseType)
+            {
+                if (t.ContainingAssembly != null && surfaceNames.Contains(t.ContainingAssembly.Name)) used.Add(t.OriginalDefinition.GetDocumentationCommentId());
+                // A base type's type arguments are part of it (SteamVR_Action_Pose's base names its source-map types).
+                foreach (ITypeSymbol arg in t.TypeArguments) AddType(arg);
             }
         }
 
-        void AddType(ITypeSymbol t)
+        // A type (and its type arguments, element type, containing types) that belongs to the surface.
+        void AddType(ITypeSymbol type)
         {
-            if (t is IArrayTypeSymbol array) t = array.ElementType;
-            if (t is not INamedTypeSymbol named) return;
-            if (named.ContainingAssembly != null && surfaceNames.Contains(named.ContainingAssembly.Name))
-                for (INamedTypeSymbol n = named.OriginalDefinition; n != null; n = n.ContainingType ?? n.BaseType)
-                    if (n.ContainingAssembly != null && surfaceNames.Contains(n.ContainingAssembly.Name)) used.Add(n.GetDocumentationCommentId());
-            foreach (ITypeSymbol a in named.TypeArguments) AddType(a);
+            switch (type)
+            {
+                case IArrayTypeSymbol array:
+                    AddType(array.ElementType);
+                    return;
+                case INamedTypeSymbol named:
+                    foreach (ITypeSymbol arg in named.TypeArguments) AddType(arg);
+                    // Its containing and base types too: a type cannot be declared without them (Material's base, Object).
+                    for (INamedTypeSymbol t = named.OriginalDefinition; t != null; t = t.ContainingType ?? t.BaseType)
+                        if (t.ContainingAssembly != null && surfaceNames.Contains(t.ContainingAssembly.Name)) used.Add(t.OriginalDefinition.GetDocumentationCommentId());
+                    return;
+            }
         }
     }
 

@@ -22,6 +22,14 @@ public static class SurfaceVerifier
     /// <summary>The branch the current editor's sources are compared on.</summary>
     public const string CurrentBranch = "6000.5";
 
+    /// <summary>
+    /// The symbols Unity's and the packages' sources are parsed with: those the real assemblies see where AvatarGo uses
+    /// them (the Editor, XR enabled: the Input System's XR types sit in #if UNITY_INPUT_SYSTEM_ENABLE_XR &amp;&amp; ENABLE_VR,
+    /// OpenXR's feature attribute in #if UNITY_EDITOR), and the oldest supported editor's version symbols.
+    /// </summary>
+    public static IReadOnlyList<string> SourceSymbols { get; } = new[] { "UNITY_EDITOR", "ENABLE_VR", "UNITY_INPUT_SYSTEM_ENABLE_XR", "UNITY_INPUT_SYSTEM_ENABLE_VR" }
+        .Concat(UnityConfiguration.VersionSymbols(UnityConfiguration.Oldest)).ToList();
+
     /// <summary>Verifies every surface file; returns problems and writes notes to <paramref name="log"/>.</summary>
     /// <param name="surfaceRoot">Tools~/UnitySurface.</param>
     /// <param name="sources">Source alias ("UnityCsReference", "com.unity.test-framework") to its git directory.</param>
@@ -32,7 +40,11 @@ public static class SurfaceVerifier
         var parse = new CSharpParseOptions(LanguageVersion.Preview);
         foreach (string file in Directory.GetFiles(surfaceRoot, "*.cs", SearchOption.AllDirectories).OrderBy(f => f, StringComparer.Ordinal))
         {
-            SyntaxNode root = CSharpSyntaxTree.ParseText(File.ReadAllText(file), parse.WithPreprocessorSymbols("UNITY_EDITOR")).GetRoot();
+            // Every flavour of the surface: the Editor, the current editor's version symbols and every package-version symbol,
+            // so that members declared for newer versions are checked too (against the source their comment names).
+            var surfaceSymbols = new[] { "UNITY_EDITOR" }.Concat(UnityConfiguration.VersionSymbols(UnityConfiguration.Current))
+                .Concat(UnityCatalog.SurfaceAssemblies.SelectMany(a => a.VersionDefines).Select(v => v.Define)).Distinct();
+            SyntaxNode root = CSharpSyntaxTree.ParseText(File.ReadAllText(file), parse.WithPreprocessorSymbols(surfaceSymbols)).GetRoot();
             foreach (BaseTypeDeclarationSyntax type in root.DescendantNodes().OfType<BaseTypeDeclarationSyntax>())
             {
                 var members = type is TypeDeclarationSyntax td ? td.Members.Where(m => m is not BaseTypeDeclarationSyntax).ToList()
@@ -44,10 +56,12 @@ public static class SurfaceVerifier
                     string what = $"{type.Identifier.Text}{(declaration == type ? "" : "." + Name(declaration))}";
                     if (m == null || !m.Success) { problems.Add($"{file}: {what} names no source"); continue; }
                     if (!sources.TryGetValue(m.Groups["repo"].Value, out string git)) { log.WriteLine($"  skipped {what}: no clone given for {m.Groups["repo"].Value}"); continue; }
-                    foreach (string branch in new[] { m.Groups["ref"].Value, CurrentBranch }.Distinct())
+                    // Unity's own sources on the current editor's branch; a package's at its newest snapshot (the mirror's HEAD).
+                    string current = m.Groups["repo"].Value == "UnityCsReference" ? CurrentBranch : "HEAD";
+                    foreach (string branch in new[] { m.Groups["ref"].Value, current }.Distinct())
                     {
                         string text = Show(git, branch, m.Groups["path"].Value);
-                        string verdict = text == null ? "file missing" : Compare(type, declaration, CSharpSyntaxTree.ParseText(text, parse).GetRoot());
+                        string verdict = text == null ? "file missing" : Compare(type, declaration, CSharpSyntaxTree.ParseText(text, parse.WithPreprocessorSymbols(SourceSymbols)).GetRoot());
                         bool primary = branch == m.Groups["ref"].Value;
                         if (verdict == null) log.WriteLine($"  ok   {what} @{branch} {m.Groups["path"].Value}");
                         else if (primary) problems.Add($"{what}: {verdict} in {m.Groups["repo"].Value}@{branch} {m.Groups["path"].Value}");
@@ -61,7 +75,8 @@ public static class SurfaceVerifier
 
     private static string Compare(BaseTypeDeclarationSyntax surfaceType, SyntaxNode declaration, SyntaxNode unity)
     {
-        var candidates = unity.DescendantNodes().OfType<BaseTypeDeclarationSyntax>().Where(t => t.Identifier.Text == surfaceType.Identifier.Text).ToList();
+        var candidates = unity.DescendantNodes().OfType<BaseTypeDeclarationSyntax>()
+            .Where(t => t.Identifier.Text == surfaceType.Identifier.Text && Arity(t) == Arity(surfaceType)).ToList();
         if (candidates.Count == 0) return $"no type {surfaceType.Identifier.Text}";
         if (declaration == surfaceType)
         {
@@ -79,8 +94,12 @@ public static class SurfaceVerifier
         return $"signature differs: surface '{want}', Unity '{string.Join("' | '", found.Select(Signature))}'";
     }
 
+    // InputControl and InputControl<TValue> are different types.
+    private static int Arity(BaseTypeDeclarationSyntax t) => (t as TypeDeclarationSyntax)?.TypeParameterList?.Parameters.Count ?? 0;
+
     private static string Name(SyntaxNode n) => n switch
     {
+        IndexerDeclarationSyntax => "this[]",
         MethodDeclarationSyntax x => x.Identifier.Text,
         PropertyDeclarationSyntax x => x.Identifier.Text,
         FieldDeclarationSyntax x => x.Declaration.Variables[0].Identifier.Text,
@@ -103,6 +122,7 @@ public static class SurfaceVerifier
             ConstructorDeclarationSyntax x => $"{Mods(x.Modifiers)} .ctor{Params(x.ParameterList)}",
             OperatorDeclarationSyntax x => $"{Mods(x.Modifiers)} {Last(x.ReturnType.ToString())} operator{x.OperatorToken.Text}{Params(x.ParameterList)}",
             PropertyDeclarationSyntax x => $"{Mods(x.Modifiers)} {Last(x.Type.ToString())} {x.Identifier.Text} {{{string.Join(" ", (x.AccessorList?.Accessors.Select(a => (Mods(a.Modifiers) + " " + a.Keyword.Text).Trim()) ?? new[] { "get" }))}}}",
+            IndexerDeclarationSyntax x => $"{Mods(x.Modifiers)} {Last(x.Type.ToString())} this[{string.Join(", ", x.ParameterList.Parameters.Select(p => Last(p.Type?.ToString()) + " " + p.Identifier.Text))}] {{{string.Join(" ", (x.AccessorList?.Accessors.Select(a => (Mods(a.Modifiers) + " " + a.Keyword.Text).Trim()) ?? new[] { "get" }))}}}",
             FieldDeclarationSyntax x => $"{Mods(x.Modifiers)} {Last(x.Declaration.Type.ToString())} {x.Declaration.Variables[0].Identifier.Text}",
             EnumMemberDeclarationSyntax x => $"{x.Identifier.Text} = {x.EqualsValue?.Value}",
             // An event with accessors and a field-like event are the same to a caller: kind, type and name.

@@ -13,7 +13,23 @@ namespace AvatarGo.UnityGate;
 /// <param name="References">Other surface assemblies it references.</param>
 /// <param name="UsesNUnit">True when it references nunit.framework.dll (the Test Framework's assemblies).</param>
 /// <param name="Source">Where its asmdef (or, for engine assemblies, its definition) was read.</param>
-public sealed record SurfaceAssembly(string Name, string Package, bool EditorOnly, IReadOnlyList<string> References, bool UsesNUnit, string Source);
+public sealed record SurfaceAssembly(string Name, string Package, bool EditorOnly, IReadOnlyList<string> References, bool UsesNUnit, string Source)
+{
+    /// <summary>
+    /// True for an assembly a plug-in imported into the project's Assets folder provides (the SteamVR Unity Plugin): it
+    /// exists only in a configuration that lists it in <see cref="UnityConfiguration.AssetsAssemblies"/>, as Unity's
+    /// versionDefines cannot see it.
+    /// </summary>
+    public bool ImportedIntoAssets { get; init; }
+
+    /// <summary>
+    /// The versionDefines of the real assembly's own asmdef that change its API (SteamVR.asmdef's OPENVR_XR_API), plus
+    /// symbols naming package versions from which the surface declares a member (OPENXR_1_9_OR_NEWER): the surface
+    /// sees them as Unity compiles the real assembly, so a member that exists only in some versions is declared under
+    /// its symbol.
+    /// </summary>
+    public IReadOnlyList<VersionDefine> VersionDefines { get; init; } = Array.Empty<VersionDefine>();
+}
 
 /// <summary>What the gate knows about Unity beyond the package: surface assemblies, optional packages, release series.</summary>
 public static class UnityCatalog
@@ -38,6 +54,35 @@ public static class UnityCatalog
             "com.unity.test-framework@1.1.33 UnityEngine.TestRunner/UnityEngine.TestRunner.asmdef (overrideReferences, nunit.framework.dll)"),
         new SurfaceAssembly("UnityEditor.TestRunner", "com.unity.test-framework", true, new[] { "UnityEngine", "UnityEditor", "UnityEngine.TestRunner" }, true,
             "com.unity.test-framework@1.1.33 UnityEditor.TestRunner/UnityEditor.TestRunner.asmdef (includePlatforms Editor)"),
+        new SurfaceAssembly("Unity.InputSystem", "com.unity.inputsystem", false, new[] { "UnityEngine" }, false,
+            "com.unity.inputsystem@1.0.2 InputSystem/Unity.InputSystem.asmdef (its XR types compile with com.unity.modules.xr, which AvatarGo depends on)")
+        {
+            VersionDefines = new[] { new VersionDefine("com.unity.inputsystem", "1.1.1", "INPUT_SYSTEM_1_1_OR_NEWER") },
+        },
+        new SurfaceAssembly("Unity.XR.OpenXR", "com.unity.xr.openxr", false, new[] { "UnityEngine", "Unity.InputSystem" }, false,
+            "com.unity.xr.openxr@1.0.2 Runtime/Unity.XR.OpenXR.asmdef (its OpenXRFeatureAttribute compiles in the Editor only)")
+        {
+            VersionDefines = new[] { new VersionDefine("com.unity.xr.openxr", "1.9.1", "OPENXR_1_9_OR_NEWER") },
+        },
+        new SurfaceAssembly("Unity.XR.CoreUtils", "com.unity.xr.core-utils", false, new[] { "UnityEngine" }, false,
+            "com.unity.xr.core-utils@2.0.0 Runtime/Unity.XR.CoreUtils.asmdef"),
+        new SurfaceAssembly("Unity.XR.Interaction.Toolkit", "com.unity.xr.interaction.toolkit", false, new[] { "UnityEngine", "Unity.InputSystem", "Unity.XR.CoreUtils" }, false,
+            "com.unity.xr.interaction.toolkit@2.0.0 Runtime/Unity.XR.Interaction.Toolkit.asmdef")
+        {
+            VersionDefines = new[]
+            {
+                new VersionDefine("com.unity.xr.interaction.toolkit", "2.4.0", "XRI_2_4_OR_NEWER"),
+                new VersionDefine("com.unity.xr.interaction.toolkit", "3.0.0", "XRI_3_OR_NEWER"),
+            },
+        },
+        new SurfaceAssembly("Unity.XR.OpenVR", "com.valvesoftware.unity.openvr", false, new[] { "UnityEngine" }, false,
+            "unity-xr-plugin@v1.1.4 com.valve.openvr/Runtime/Unity.XR.OpenVR.asmdef (the OpenVR XR plug-in; holds openvr_api.cs's Valve.VR types)"),
+        new SurfaceAssembly("SteamVR", null, false, new[] { "UnityEngine", "Unity.XR.OpenVR" }, false,
+            "steamvr_unity_plugin@2.7.3 Assets/SteamVR/SteamVR.asmdef (imported into Assets; its openvr_api.cs compiles only without OPENVR_XR_API)")
+        {
+            ImportedIntoAssets = true,
+            VersionDefines = new[] { new VersionDefine("com.valvesoftware.unity.openvr", "", "OPENVR_XR_API") },
+        },
     };
 
     /// <summary>The surface assembly with this name, or null.</summary>
@@ -50,8 +95,27 @@ public static class UnityCatalog
     /// </summary>
     public static IReadOnlyDictionary<string, string> OptionalPackages(UnityVersion unity) =>
         unity.Major >= 6000
-            ? new Dictionary<string, string> { ["com.unity.test-framework"] = "1.4.6", [NUnitPackage] = "2.0.5" }
-            : new Dictionary<string, string> { ["com.unity.test-framework"] = "1.1.33", [NUnitPackage] = "1.0.6" };
+            ? new Dictionary<string, string>
+            {
+                ["com.unity.test-framework"] = "1.4.6", [NUnitPackage] = "2.0.5",
+                // The newest releases in the mirrors the surface was checked against (XRI 3.5 and later require Unity 6000.0).
+                ["com.unity.inputsystem"] = "1.14.0", ["com.unity.xr.openxr"] = "1.17.1", ["com.unity.xr.core-utils"] = "2.5.3",
+                ["com.unity.xr.interaction.toolkit"] = "3.5.1", ["com.valvesoftware.unity.openvr"] = "1.2.4",
+            }
+            : new Dictionary<string, string>
+            {
+                ["com.unity.test-framework"] = "1.1.33", [NUnitPackage] = "1.0.6",
+                // The oldest versions AvatarGo's asmdefs accept that resolve together: XRI 2.0.0 needs inputsystem 1.2.0 and
+                // core-utils 2.0.0; OpenXR 1.0.2 needs inputsystem 1.0.2; the OpenVR XR plug-in 1.1.4 is the one SteamVR 2.7.3 bundles.
+                ["com.unity.inputsystem"] = "1.2.0", ["com.unity.xr.openxr"] = "1.0.2", ["com.unity.xr.core-utils"] = "2.0.0",
+                ["com.unity.xr.interaction.toolkit"] = "2.0.0", ["com.valvesoftware.unity.openvr"] = "1.1.4",
+            };
+
+    /// <summary>What "every optional package" also holds outside Packages/: the SteamVR Unity Plugin in Assets, and the define that enables AvatarGo's SteamVR source.</summary>
+    public static IReadOnlyList<string> OptionalAssetsAssemblies { get; } = new[] { "SteamVR" };
+
+    /// <summary>The Player Settings scripting define that enables AvatarGo's SteamVR assembly (Documentation~/tracking-sources.md).</summary>
+    public const string SteamVRDefine = "AVATARGO_STEAMVR";
 
     /// <summary>
     /// The NUnit build folder matching Unity's: ext.nunit 1.0.x ships a net35 build, 2.0.x a net40 build

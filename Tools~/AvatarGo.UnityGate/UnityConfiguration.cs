@@ -24,6 +24,12 @@ public sealed record UnityConfiguration(
     bool IncludeTestAssemblies,
     string Description)
 {
+    /// <summary>Assemblies of plug-ins imported into Assets (the SteamVR Unity Plugin: "SteamVR"), which versionDefines cannot detect.</summary>
+    public IReadOnlyList<string> AssetsAssemblies { get; init; } = Array.Empty<string>();
+
+    /// <summary>Scripting define symbols set in Player Settings (AVATARGO_STEAMVR), defined for every assembly.</summary>
+    public IReadOnlyList<string> ScriptingDefines { get; init; } = Array.Empty<string>();
+
     /// <summary>The oldest editor the package supports ("unity": "2021.3" in package.json, no unityRelease).</summary>
     public static readonly UnityVersion Oldest = UnityVersion.Parse("2021.3.0f1");
 
@@ -34,15 +40,23 @@ public sealed record UnityConfiguration(
     public static IReadOnlyList<UnityConfiguration> Standard { get; } = new[]
     {
         new UnityConfiguration("editor-2021.3", Oldest, true, "WindowsStandalone64", UnityCatalog.OptionalPackages(Oldest), false,
-            "Unity 2021.3.0f1 Editor with every optional package the package knows (Test Framework included)"),
+            "Unity 2021.3.0f1 Editor with every optional package the package knows, at the oldest versions it accepts (Test Framework, Input System, OpenXR, XR Core Utilities, XR Interaction Toolkit 2.x, OpenVR XR plug-in; the SteamVR plug-in in Assets with AVATARGO_STEAMVR)")
+            { AssetsAssemblies = UnityCatalog.OptionalAssetsAssemblies, ScriptingDefines = new[] { UnityCatalog.SteamVRDefine } },
         new UnityConfiguration("editor-2021.3-bare", Oldest, true, "WindowsStandalone64", new Dictionary<string, string>(), false,
             "Unity 2021.3.0f1 Editor with no optional package, only the built-in modules: test and integration assemblies are skipped by their defineConstraints"),
+        new UnityConfiguration("editor-2021.3-partial", Oldest, true, "WindowsStandalone64",
+            new Dictionary<string, string> { ["com.unity.xr.core-utils"] = "2.0.0" }, false,
+            "Unity 2021.3.0f1 Editor with XR Core Utilities alone (an XR Origin without the XR Interaction Toolkit or the Input System) and the SteamVR plug-in in Assets without the OpenVR XR plug-in: the integrations compile without the packages they only use when present")
+            { AssetsAssemblies = UnityCatalog.OptionalAssetsAssemblies, ScriptingDefines = new[] { UnityCatalog.SteamVRDefine } },
         new UnityConfiguration("player-2021.3", Oldest, false, "WindowsStandalone64", UnityCatalog.OptionalPackages(Oldest), false,
-            "Unity 2021.3.0f1 Windows 64-bit player build: runtime assemblies without UNITY_EDITOR and without the UnityEditor surface"),
+            "Unity 2021.3.0f1 Windows 64-bit player build: runtime assemblies without UNITY_EDITOR and without the UnityEditor surface")
+            { AssetsAssemblies = UnityCatalog.OptionalAssetsAssemblies, ScriptingDefines = new[] { UnityCatalog.SteamVRDefine } },
         new UnityConfiguration("editor-6000.5", Current, true, "WindowsStandalone64", UnityCatalog.OptionalPackages(Current), false,
-            "Unity 6000.5.2f1 Editor with every optional package (the 6000.x surface: obsolete-as-error members)"),
+            "Unity 6000.5.2f1 Editor with every optional package at its newest version (XR Interaction Toolkit 3.x; the 6000.x surface: obsolete-as-error members)")
+            { AssetsAssemblies = UnityCatalog.OptionalAssetsAssemblies, ScriptingDefines = new[] { UnityCatalog.SteamVRDefine } },
         new UnityConfiguration("player-6000.5", Current, false, "WindowsStandalone64", UnityCatalog.OptionalPackages(Current), false,
-            "Unity 6000.5.2f1 Windows 64-bit player build"),
+            "Unity 6000.5.2f1 Windows 64-bit player build")
+            { AssetsAssemblies = UnityCatalog.OptionalAssetsAssemblies, ScriptingDefines = new[] { UnityCatalog.SteamVRDefine } },
     };
 
     /// <summary>The configuration of <see cref="Standard"/> with this name.</summary>
@@ -81,6 +95,7 @@ public sealed record UnityConfiguration(
             d.Add("ENABLE_IL2CPP");
             if (IncludeTestAssemblies) d.Add("UNITY_INCLUDE_TESTS");
         }
+        d.UnionWith(ScriptingDefines);
         if (editorOnlyAssembly) d.UnionWith(new[] { "NET_4_6", "NET_UNITY_4_8" });
         else d.UnionWith(new[] { "NET_STANDARD", "NET_STANDARD_2_0", "NET_STANDARD_2_1", "NETSTANDARD", "NETSTANDARD2_1" });
         return d;

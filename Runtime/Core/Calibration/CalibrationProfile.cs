@@ -19,8 +19,11 @@ namespace AvatarGo.Core
         private readonly PerRole<RigidPose> _jointAtCalibration = new PerRole<RigidPose>(RigidPose.Identity);
         private readonly PerRole<RigidPose> _jointInDevice = new PerRole<RigidPose>(RigidPose.Identity);
 
-        /// <summary>The current format version of persisted profiles.</summary>
-        public const int Version = 1;
+        /// <summary>
+        /// The current format version of persisted profiles: 2 adds the scale mode, the proportions and the measurements
+        /// (issue 15); version 1 files still load, as uniformly scaled profiles without measurements.
+        /// </summary>
+        public const int Version = 2;
 
         /// <summary>Creates an empty profile; <see cref="Calibrator"/> fills it.</summary>
         public CalibrationProfile() { }
@@ -28,8 +31,23 @@ namespace AvatarGo.Core
         /// <summary>How the offsets were obtained.</summary>
         public OffsetMode Mode { get; private set; }
 
-        /// <summary>The uniform scale applied to the avatar (wearer eye height / avatar eye height).</summary>
+        /// <summary>
+        /// The overall scale applied to the avatar: wearer eye height / avatar eye height when uniform; with fitted
+        /// <see cref="Proportions"/>, the scale of the torso, head, hands and feet (the eye heights still match).
+        /// </summary>
         public float AvatarScale { get; internal set; } = 1f;
+
+        /// <summary>How the avatar was scaled: uniformly (the paper's) or with fitted proportions.</summary>
+        public ScaleMode ScaleMode { get; internal set; }
+
+        /// <summary>
+        /// The avatar's legs and arms relative to <see cref="AvatarScale"/> (<see cref="BodyProportions.Uniform"/> for uniform
+        /// scaling): the avatar the offsets were computed on is <c>Proportions.Apply(avatar, AvatarScale)</c>.
+        /// </summary>
+        public BodyProportions Proportions { get; internal set; } = BodyProportions.Uniform;
+
+        /// <summary>The wearer's body measured at calibration, or null (a profile saved before measurements existed).</summary>
+        public BodyMeasurements Measurements { get; internal set; }
 
         /// <summary>The wearer's eye height above the floor, in metres (from the HMD in T-pose).</summary>
         public float WearerEyeHeight { get; internal set; }
@@ -206,6 +224,9 @@ namespace AvatarGo.Core
             FloorHeight = other.FloorHeight;
             Placement = other.Placement;
             RootToHead = other.RootToHead;
+            ScaleMode = other.ScaleMode;
+            Proportions = other.Proportions;
+            Measurements = other.Measurements;
         }
     }
 }

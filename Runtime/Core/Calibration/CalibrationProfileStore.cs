@@ -59,6 +59,18 @@ namespace AvatarGo.Core
             w.Name("floorHeight").Value(profile.FloorHeight);
             w.Name("placement"); WritePose(w, profile.Placement);
             w.Name("rootToHead").Values(profile.RootToHead.X, profile.RootToHead.Y, profile.RootToHead.Z);
+            w.Name("scaleMode").Value(profile.ScaleMode == ScaleMode.Fitted ? "fitted" : "uniform");
+            BodyProportions pr = profile.Proportions;
+            w.Name("proportions").BeginObject();
+            w.Name("leftLeg").Value(pr.LeftLeg).Name("rightLeg").Value(pr.RightLeg).Name("leftArm").Value(pr.LeftArm).Name("rightArm").Value(pr.RightArm);
+            w.EndObject();
+            if (profile.Measurements != null)
+            {
+                w.Name("measurements").BeginObject();
+                w.Name("windows").Value(profile.Measurements.Windows);
+                foreach (var (name, m) in profile.Measurements.All()) w.Name(name).Values(m.Value, m.Uncertainty);
+                w.EndObject();
+            }
             w.Name("roles").BeginObject();
             foreach (DeviceRole role in BodyRoles.All)
             {
@@ -92,7 +104,8 @@ namespace AvatarGo.Core
             JsonNode root = JsonNode.Parse(json, sourceName);
             if (root.Kind != JsonKind.Object || root["format"]?.String != FormatName) throw root.Error($"Not an AvatarGo calibration profile (no \"format\": \"{FormatName}\").");
             double version = root.GetNumber("version");
-            if (version != CalibrationProfile.Version) throw root["version"].Error($"Calibration profile version {version.ToString(CultureInfo.InvariantCulture)} is not supported (this package reads version {CalibrationProfile.Version}).");
+            if (version != 1 && version != CalibrationProfile.Version)
+                throw root["version"].Error($"Calibration profile version {version.ToString(CultureInfo.InvariantCulture)} is not supported (this package reads versions 1 to {CalibrationProfile.Version}).");
             var p = new CalibrationProfile
             {
                 AvatarScale = Number(root, "avatarScale", MinAvatarScale, MaxAvatarScale),
@@ -102,6 +115,7 @@ namespace AvatarGo.Core
                 Placement = ReadPose(root, "placement"),
                 RootToHead = ReadPosition(root, "rootToHead"),
             };
+            if (version >= 2) ReadProportions(root, p);
             string mode = root.GetString("mode");
             if (mode != "exact" && mode != "fixed") throw root["mode"].Error($"'mode' must be exact or fixed, not '{JsonNode.Printable(mode)}'.");
             JsonNode roles = root["roles"];
@@ -146,6 +160,37 @@ namespace AvatarGo.Core
             long length = new FileInfo(path).Length;
             if (length > MaxFileLength * 4L) throw new FormatException($"{name}:1: {length} bytes is more than a calibration profile holds (at most {MaxFileLength} characters)");
             return FromJson(File.ReadAllText(path), name);
+        }
+
+        /// <summary>The largest limb ratio (relative to the overall scale) a profile may hold, and the inverse the smallest.</summary>
+        public const float MaxProportion = 4f;
+
+        // Version 2: the scale mode, the proportions (required) and the measurements (optional: a profile whose fit was not
+        // measured has none).
+        private static void ReadProportions(JsonNode root, CalibrationProfile p)
+        {
+            string scaleMode = root.GetString("scaleMode");
+            if (scaleMode != "uniform" && scaleMode != "fitted") throw root["scaleMode"].Error($"'scaleMode' must be uniform or fitted, not '{JsonNode.Printable(scaleMode)}'.");
+            p.ScaleMode = scaleMode == "fitted" ? ScaleMode.Fitted : ScaleMode.Uniform;
+            JsonNode pr = root["proportions"];
+            if (pr == null || pr.Kind != JsonKind.Object) throw (pr ?? root).Error("'proportions' must be an object with leftLeg, rightLeg, leftArm and rightArm.");
+            p.Proportions = new BodyProportions(Number(pr, "leftLeg", 1f / MaxProportion, MaxProportion), Number(pr, "rightLeg", 1f / MaxProportion, MaxProportion),
+                Number(pr, "leftArm", 1f / MaxProportion, MaxProportion), Number(pr, "rightArm", 1f / MaxProportion, MaxProportion));
+            JsonNode m = root["measurements"];
+            if (m == null) return;
+            if (m.Kind != JsonKind.Object) throw m.Error("'measurements' must be an object.");
+            var measurements = new BodyMeasurements();
+            double windows = m.GetNumber("windows");
+            if (!(windows >= 1 && windows <= 2) || windows != Math.Floor(windows)) throw m["windows"].Error("'measurements.windows' must be 1 or 2.");
+            measurements.Windows = (int)windows;
+            foreach (var (name, _) in measurements.All())
+            {
+                double[] v = m.GetNumbers(name, 2);
+                if (!(v[0] >= 0 && v[0] <= MaxHeight) || !(v[1] >= 0 && v[1] <= MaxHeight))
+                    throw m[name].Error($"'measurements.{name}' must be [value, uncertainty], each from 0 to {MaxHeight.ToString(CultureInfo.InvariantCulture)} m.");
+                measurements.Set(name, new Measurement((float)v[0], (float)v[1]));
+            }
+            p.Measurements = measurements;
         }
 
         private static string RoleKey(DeviceRole role)

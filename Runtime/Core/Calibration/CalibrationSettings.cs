@@ -1,3 +1,5 @@
+using System;
+
 namespace AvatarGo.Core
 {
     /// <summary>Tunable thresholds of the calibration; the defaults suit adults in room-scale VR.</summary>
@@ -26,6 +28,18 @@ namespace AvatarGo.Core
         /// the HMD is ignored (and the step result says so). Set it for runtimes that report presses on other devices.
         /// </summary>
         public bool AcceptTriggerFromAnyDevice { get; set; }
+
+        private ProportionSettings _proportions = new ProportionSettings();
+
+        /// <summary>
+        /// How the avatar is scaled: uniformly (the default, the paper's) or with its legs and arms fitted to the wearer's
+        /// measured proportions, the limits and the measurement tolerances (<see cref="ProportionFitter"/>).
+        /// </summary>
+        public ProportionSettings Proportions
+        {
+            get => _proportions;
+            set => _proportions = value ?? throw new ArgumentNullException(nameof(value));
+        }
 
         /// <summary>How far in front of the ankle a foot tracker sits, used to place the avatar (8 cm).</summary>
         public float FootTrackerForward { get; set; } = 0.08f;

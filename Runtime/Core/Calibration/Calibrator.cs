@@ -30,6 +30,7 @@ namespace AvatarGo.Core
         private readonly Dictionary<int, int> _indexById = new Dictionary<int, int>();
         private readonly PerRole<int> _deviceByRole = new PerRole<int>(-1);
         private double _lastAdvance = double.NegativeInfinity;
+        private BodyFeatures _tposeFeatures;
 
         /// <summary>Creates a calibrator for these devices (in the order samples will come) and this avatar.</summary>
         /// <exception cref="ArgumentException">The avatar lacks a required humanoid bone, or two devices share an id.</exception>
@@ -100,7 +101,7 @@ namespace AvatarGo.Core
                 for (int d = 0; d < _devices.Length; d++)
                     if (_devices[d].Serial == profile.Serial(role)) roles[role] = d;
             _deviceByRole.CopyFrom(roles);
-            ShowAvatar(profile.AvatarScale, profile.Placement);
+            ShowAvatar(profile.AvatarScale, profile.Placement, profile.Proportions);
             Profile = profile.WithDeviceIds(_devices, _deviceByRole);
             State = CalibrationState.Calibrated;
             LastStep = new CalibrationStep(State, CalibrationStepOutcome.Advanced, CalibrationError.None, "Calibration restored from a saved profile.", null);
@@ -183,25 +184,37 @@ namespace AvatarGo.Core
             if (error == CalibrationError.None) error = _validator.CheckLevels(_deviceByRole, _averages, chosen.Floor, chosen.EyeHeight, out detail);
             if (error != CalibrationError.None) return Refuse(error, detail, explanation.ToString());
 
-            // Scale: the wearer's eye height over the avatar's.
+            // Scale: the wearer's eye height over the avatar's; with fitted proportions, legs and arms to the measurement.
             var unscaled = new SkeletonPose(_avatar.Skeleton);
             TPoser.Apply(_avatar, unscaled, RigidPose.Identity);
             float avatarEye = TPoser.EyePosition(_avatar, unscaled, System.Numerics.Quaternion.Identity).Y;
             float scale = chosen.EyeHeight / avatarEye;
+            _tposeFeatures = Features(chosen.Floor);
+            ProportionFit fit = ProportionFitter.Fit(_avatar, _tposeFeatures, _settings.Proportions);
+            BodyProportions proportions = BodyProportions.Uniform;
+            if (_settings.Proportions.Mode == ScaleMode.Fitted)
+            {
+                proportions = fit.Proportions;
+                scale = fit.Scale;
+            }
+            explanation.Append(explanation.Length > 0 ? "; " : "").Append(fit.Explanation);
             RigidPose placement = _validator.Placement(_deviceByRole, _averages, chosen.Floor, forward);
-            ShowAvatar(scale, placement);
-            Profile = new CalibrationProfile { AvatarScale = scale, WearerEyeHeight = chosen.EyeHeight, AvatarEyeHeight = avatarEye, FloorHeight = chosen.Floor, Placement = placement };
+            ShowAvatar(scale, placement, proportions);
+            Profile = new CalibrationProfile
+            {
+                AvatarScale = scale, WearerEyeHeight = chosen.EyeHeight, AvatarEyeHeight = avatarEye, FloorHeight = chosen.Floor, Placement = placement,
+                ScaleMode = _settings.Proportions.Mode, Proportions = proportions, Measurements = fit.Measurements,
+            };
             foreach (DeviceRole role in BodyRoles.All) Profile.SetDevice(role, _devices[_deviceByRole[role]]);
             State = CalibrationState.WalkIn;
             return Advance(now, explanation.ToString());
         }
 
-        // The avatar scaled and in T-pose at the placement (what the wearer walks into).
-        private void ShowAvatar(float scale, RigidPose placement)
+        // The avatar scaled (and fitted) and in T-pose at the placement (what the wearer walks into).
+        private void ShowAvatar(float scale, RigidPose placement, BodyProportions proportions)
         {
-            Skeleton scaled = _avatar.Skeleton.Scaled(scale);
-            ScaledAvatar = new HumanoidMap(scaled, _avatar.Pairs());
-            AvatarPose = new SkeletonPose(scaled);
+            ScaledAvatar = proportions.IsUniform ? new HumanoidMap(_avatar.Skeleton.Scaled(scale), _avatar.Pairs()) : proportions.Apply(_avatar, scale);
+            AvatarPose = new SkeletonPose(ScaledAvatar.Skeleton);
             TPoser.Apply(ScaledAvatar, AvatarPose, placement);
         }
 
@@ -216,6 +229,7 @@ namespace AvatarGo.Core
                 if (!_averages[d].IsTracked) return Keep(CalibrationError.DeviceNotTracked, _devices[d].ToString());
                 if (!_averages[d].IsStill) return Keep(CalibrationError.DevicesMoving, _devices[d].ToString());
             }
+            string note = Remeasure();
             foreach (DeviceRole role in BodyRoles.All)
             {
                 RigidPose joint = AvatarPose.World[ScaledAvatar[BodyRoles.JointOf(role)]];
@@ -223,7 +237,39 @@ namespace AvatarGo.Core
             }
             Profile.RootToHead = _averages[_deviceByRole[DeviceRole.Head]].Position - _averages[_deviceByRole[DeviceRole.Pelvis]].Position;
             State = CalibrationState.Calibrated;
-            return Advance(now);
+            return Advance(now, note);
+        }
+
+        // The largest difference between the T-pose's and the walk-in's features for the two to count as the same T-pose.
+        private const float SamePoseTolerance = 0.05f;
+
+        // The device features of this window's averages (the roles known).
+        private BodyFeatures Features(float floor) => BodyFeatures.FromDevices(
+            _averages[_deviceByRole[DeviceRole.Head]].Position, _averages[_deviceByRole[DeviceRole.Pelvis]].Position,
+            _averages[_deviceByRole[DeviceRole.LeftHand]].Position, _averages[_deviceByRole[DeviceRole.RightHand]].Position,
+            floor, _settings.Proportions.PelvisTrackerAboveHips);
+
+        // The walk-in is the same T-pose inside the avatar: its window and the T-pose's measure the wearer together. With
+        // fitted proportions the avatar is refitted to both (the offsets are then computed on it); a uniform avatar keeps the
+        // T-pose's scale (the paper's). A walk-in pose that differs from the T-pose's is not pooled.
+        private string Remeasure()
+        {
+            BodyFeatures walkIn = Features(Profile.FloorHeight);
+            float difference = BodyFeatures.Difference(_tposeFeatures, walkIn);
+            if (!walkIn.IsFinite || !(difference <= SamePoseTolerance))
+                return FormattableString.Invariant($"the walk-in pose differs from the T-pose by {difference * 100:0.0} cm: measured from the T-pose alone");
+            ProportionFit fit = ProportionFitter.Fit(_avatar, BodyFeatures.Mean(_tposeFeatures, walkIn), _settings.Proportions, 0.5f * difference, 2);
+            Profile.Measurements = fit.Measurements;
+            if (_settings.Proportions.Mode != ScaleMode.Fitted) return null;
+            // Proportions still uniform: the T-pose's scale stays (the paper's), so fitting changes nothing for such a wearer.
+            if (fit.Proportions.IsUniform && Profile.Proportions.IsUniform) return "refitted to the T-pose and the walk-in: " + fit.Explanation;
+            if (!fit.Proportions.Equals(Profile.Proportions) || fit.Scale != Profile.AvatarScale)
+            {
+                ShowAvatar(fit.Scale, Profile.Placement, fit.Proportions);
+                Profile.AvatarScale = fit.Scale;
+                Profile.Proportions = fit.Proportions;
+            }
+            return "refitted to the T-pose and the walk-in: " + fit.Explanation;
         }
 
         // A refused walk-in step keeps the roles: the wearer only has to hold still and press again.

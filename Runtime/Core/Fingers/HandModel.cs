@@ -165,6 +165,30 @@ namespace AvatarGo.Core
             return reason == null;
         }
 
+        /// <summary>
+        /// The palm of a hand without finger bones, in the T-pose <paramref name="tpose"/> (world): the hand points along the
+        /// wrist's child (an End Site), or along the forearm when it has none; the palm faces down and the thumb forward,
+        /// as the T-pose holds them; the hand is 0.36 of the forearm long (wrist to middle knuckle, typical proportions), and
+        /// the palm centre is <see cref="GripAlongPalm"/> of the way along it, one finger radius out of the palm. Where such
+        /// a hand holds a controller: <see cref="GripPose"/> of these.
+        /// </summary>
+        public static void PalmWithoutFingers(HumanoidMap wearer, SkeletonPose tpose, BodySide side, out Vector3 palmCentre, out Vector3 normal, out Vector3 across)
+        {
+            if (wearer == null) throw new ArgumentNullException(nameof(wearer));
+            if (tpose == null) throw new ArgumentNullException(nameof(tpose));
+            RigidPose[] w = tpose.World;
+            Vector3 wrist = w[wearer[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]].Position;
+            Vector3 elbow = w[wearer[HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side)]].Position;
+            int landmark = TPoser.HandLandmark(wearer, side);
+            Vector3 outward = side == BodySide.Left ? -Vector3.UnitX : Vector3.UnitX;
+            Vector3 along = Vectors.NormalizeOr(landmark >= 0 ? w[landmark].Position - wrist : wrist - elbow, outward);
+            normal = Vectors.NormalizeOr(Vectors.ProjectOnPlane(-Vector3.UnitY, along), -Vector3.UnitY);
+            across = side == BodySide.Left ? Vector3.Cross(along, normal) : Vector3.Cross(normal, along);
+            float handLength = 0.36f * Vector3.Distance(wrist, elbow);
+            float fingerRadius = 0.0085f * handLength / 0.095f;
+            palmCentre = wrist + along * (GripAlongPalm * handLength) + normal * fingerRadius;
+        }
+
         /// <summary>The rig.</summary>
         public HumanoidMap Map { get; }
 

@@ -48,6 +48,20 @@ namespace AvatarGo.Core
             events.Add(new DeviceEvent(deviceId, now ? DeviceEventKind.TriggerPressed : DeviceEventKind.TriggerReleased));
         }
 
+        /// <summary>The number of devices this state is for.</summary>
+        public int DeviceCount => _pressed.Length;
+
+        /// <summary>
+        /// A copy for <paramref name="devices"/> devices with the same thresholds, each device both have keeping its pressed
+        /// state (a source whose device list grows keeps a trigger held across the change without a second press).
+        /// </summary>
+        public TriggerEdges Resized(int devices)
+        {
+            var copy = new TriggerEdges(devices, PressAt, ReleaseAt);
+            Array.Copy(_pressed, copy._pressed, Math.Min(devices, _pressed.Length));
+            return copy;
+        }
+
         /// <summary>Device <paramref name="device"/> disconnected: its trigger counts as released, without an event.</summary>
         public void Forget(int device) => _pressed[device] = false;
     }

@@ -48,6 +48,9 @@ namespace AvatarGo.Core
             runtimeRole = DeviceRole.None;
             bool has(uint bit) => (characteristics & bit) != 0;
             if (has(TrackingReference) || has(TrackerOtherRoles)) return false;
+            // Before the head test: Unity's OpenXR eye-gaze device is HeadMounted | EyeTracking | TrackedDevice
+            // (com.unity.xr.openxr EyeGazeInteraction), and it is no HMD.
+            if (has(EyeTracking)) return false;
             if (has(HeadMounted))
             {
                 deviceClass = DeviceClass.Hmd;
@@ -58,7 +61,7 @@ namespace AvatarGo.Core
                 deviceClass = DeviceClass.Controller;
                 return true;
             }
-            if (has(HandTracking) || has(EyeTracking) || has(Camera) || !has(TrackedDevice)) return false;
+            if (has(HandTracking) || has(Camera) || !has(TrackedDevice)) return false;
             runtimeRole = has(TrackerWaist) ? DeviceRole.Pelvis : has(TrackerLeftFoot) ? DeviceRole.LeftFoot : has(TrackerRightFoot) ? DeviceRole.RightFoot : DeviceRole.None;
             return true;
         }

@@ -53,6 +53,19 @@ namespace AvatarGo.Simulation
         /// <summary>Frames in which a hand could not reach its controller.</summary>
         public int UnreachedHandFrames { get; internal set; }
 
+        /// <summary>
+        /// Frames in which a hand could not reach its controller while the wearer's own arm on that side was not fully
+        /// stretched (its shoulder-to-wrist distance under <see cref="SessionEvaluator.StretchedArm"/> of its length): an
+        /// avatar arm shorter than the wearer's shows here.
+        /// </summary>
+        public int UnreachedWhileBentFrames { get; internal set; }
+
+        /// <summary>The wearer's true measurements (from the session's ground-truth skeleton), or null without one.</summary>
+        public BodyMeasurements TrueMeasurements { get; internal set; }
+
+        /// <summary>The calibrated avatar's measurements (the fitted or uniformly scaled avatar), or null before calibration.</summary>
+        public BodyMeasurements AvatarMeasurements { get; internal set; }
+
         /// <summary>How many times the pipeline found devices swapped (none should be, in a session without swaps).</summary>
         public int RoleSwaps { get; internal set; }
 

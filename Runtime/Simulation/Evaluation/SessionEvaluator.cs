@@ -18,6 +18,12 @@ namespace AvatarGo.Simulation
         private static readonly HumanoidBone[] MidJoints =
             { HumanoidBone.LeftLowerArm, HumanoidBone.RightLowerArm, HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg };
 
+        /// <summary>
+        /// The share of its length (shoulder to elbow plus elbow to wrist) beyond which the wearer's arm counts as fully
+        /// stretched (0.98: the elbow within about 23° of straight), for <see cref="EvaluationReport.UnreachedWhileBentFrames"/>.
+        /// </summary>
+        public const double StretchedArm = 0.98;
+
         /// <summary>Evaluates one offset mode, without finger IK (see the other overload for settings).</summary>
         public static EvaluationReport Evaluate(SessionReader reader, OffsetMode mode, HumanoidMap avatar = null) =>
             Evaluate(reader, new PipelineSettings { Offsets = mode }, avatar);
@@ -55,6 +61,11 @@ namespace AvatarGo.Simulation
             var avatarAtCalibration = new RigidPose[HumanoidBones.Count];
             bool calibrated = false;
             DisturbanceTracker disturbed = null;
+            if (header.TruthHumanoid != null) report.TrueMeasurements = ProportionFitter.MeasureSkeleton(header.TruthHumanoid);
+            var armLength = new double[2];
+            if (header.TruthHumanoid != null)
+                foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+                    armLength[(int)side] = report.TrueMeasurements.ArmLength(side).Value;
 
             while (reader.ReadFrame(frame))
             {
@@ -67,6 +78,7 @@ namespace AvatarGo.Simulation
                     // The frame that completed calibration: the references for the rotation errors.
                     calibrated = true;
                     report.Profile = pipeline.ActiveProfile;
+                    report.AvatarMeasurements = ProportionFitter.MeasureSkeleton(scaled);
                     for (int b = 0; b < HumanoidBones.Count; b++)
                     {
                         truthAtCalibration[b] = frame.Truth[b];
@@ -83,6 +95,7 @@ namespace AvatarGo.Simulation
                 SkeletonPose pose = pipeline.Pose;
                 if (pipeline.LastSwapTime == frame.Time) report.RoleSwaps++;
                 if (!pipeline.Hand(BodySide.Left).Reached || !pipeline.Hand(BodySide.Right).Reached) report.UnreachedHandFrames++;
+                if (UnreachedWhileBent(pipeline, frame, armLength)) report.UnreachedWhileBentFrames++;
                 onFrame?.Invoke(pipeline, frame);
                 report.Frames++;
                 for (int b = 0; b < HumanoidBones.Count; b++)
@@ -120,6 +133,19 @@ namespace AvatarGo.Simulation
             }
             if (!calibrated) report.CalibrationMessage = pipeline.LastCalibrationStep.Message;
             return report;
+        }
+
+        // A hand that cannot reach its controller while the wearer's arm on that side is not fully stretched.
+        private static bool UnreachedWhileBent(SelfAvatarPipeline pipeline, SessionFrame frame, double[] armLength)
+        {
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+            {
+                if (pipeline.Hand(side).Reached || !(armLength[(int)side] > 0)) continue;
+                int shoulder = (int)HumanoidBones.OnSide(HumanoidBone.LeftUpperArm, side), wrist = (int)HumanoidBones.OnSide(HumanoidBone.LeftHand, side);
+                if (!frame.HasTruth[shoulder] || !frame.HasTruth[wrist]) continue;
+                if (Vector3.Distance(frame.Truth[shoulder].Position, frame.Truth[wrist].Position) < StretchedArm * armLength[(int)side]) return true;
+            }
+            return false;
         }
 
         private static void MeasureFingers(SelfAvatarPipeline pipeline, FingerReport fingers)

@@ -31,6 +31,7 @@ namespace AvatarGo.Core.Tests
         [TestCase(XrDeviceKind.TrackedDevice | XrDeviceKind.TrackingReference, false, DeviceClass.Tracker, DeviceRole.None)] // base station
         [TestCase(XrDeviceKind.HandTracking | XrDeviceKind.TrackedDevice | XrDeviceKind.Left, false, DeviceClass.Tracker, DeviceRole.None)]
         [TestCase(XrDeviceKind.EyeTracking | XrDeviceKind.TrackedDevice, false, DeviceClass.Tracker, DeviceRole.None)]
+        [TestCase(XrDeviceKind.EyeTracking | XrDeviceKind.HeadMounted | XrDeviceKind.TrackedDevice, false, DeviceClass.Tracker, DeviceRole.None)] // OpenXR eye gaze: no HMD
         [TestCase(0u, false, DeviceClass.Tracker, DeviceRole.None)]
         public void XrCharacteristicsDecideTheClassAndTheRuntimeRole(uint characteristics, bool used, DeviceClass expectedClass, DeviceRole expectedRole)
         {

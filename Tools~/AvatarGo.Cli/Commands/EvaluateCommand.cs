@@ -14,7 +14,7 @@ public sealed class EvaluateCommand : ICommand
     public string Name => "evaluate";
     public string Summary => "Replay a synthetic session and measure how closely the avatar follows";
     public string Help => """
-        avatargo evaluate SESSION [--mode exact|fixed] [--avatar FILE] [--leg-scale S] [--arm-scale S]
+        avatargo evaluate SESSION [--mode exact|fixed] [--scale-mode uniform|fitted] [--avatar FILE] [--leg-scale S] [--arm-scale S]
                          [--controller NAME|none] [--grip hold|open|point|input] [--hands palm|calibrated] [--json OUT]
                          [--knee-hint MODEL] [--elbow-hint MODEL] [--positions OUT.csv] [--bvh-out OUT.bvh] [--plot OUT.png]
 
@@ -44,11 +44,16 @@ public sealed class EvaluateCommand : ICommand
           --avatar FILE        use this BVH skeleton (its rest pose, any units) as the avatar instead
           --leg-scale S        make the avatar's legs S times as long (default 1)
           --arm-scale S        make the avatar's arms S times as long (default 1)
+          --scale-mode M       uniform (default, the paper's: by eye height) or fitted (legs and arms fitted to the
+                               wearer's measured proportions, Documentation~/calibration.md)
           --json OUT           also write the figures as JSON to OUT
           --knee-hint MODEL    how the knees' bend direction is chosen: pelvis-foot (default), pelvis, foot, toes,
                                ankle-hinge, calibration (Documentation~/solver.md compares them)
           --elbow-hint MODEL   how the elbows' bend direction is chosen: hand-axis (default), down-out-back, calibration
         """ + EvaluationOutputs.Help + """
+        Proportions: the wearer's true lengths (from the session's skeleton), the measured ones with their uncertainty,
+        and the calibrated avatar's; the frames in which a hand could not reach its controller, and of those the ones
+        in which the wearer's own arm was not fully stretched (under 98 % of its length).
         Knees and elbows: the bend-plane angle error (wearer's vs avatar's bend direction about the limb's axis),
         median / p95 / max in degrees and the share of frames beyond 90 deg ("flipped"), frames in which the
         wearer's limb bends at least 15 deg.
@@ -64,6 +69,12 @@ public sealed class EvaluateCommand : ICommand
         string avatarFile = a.String("avatar");
         float legScale = (float)a.Double("leg-scale", 1), armScale = (float)a.Double("arm-scale", 1);
         PipelineSettings settings = Settings(a, mode);
+        settings.Calibration.Proportions.Mode = a.String("scale-mode", "uniform") switch
+        {
+            "uniform" => ScaleMode.Uniform,
+            "fitted" => ScaleMode.Fitted,
+            string other => throw new UsageException($"--scale-mode must be uniform or fitted, got '{other}'"),
+        };
         DisturbanceOptions disturbance = Disturbance(a);
         EvaluationOutputs outputs = EvaluationOutputs.FromArgs(a);
         a.ThrowOnUnknown(1);
@@ -189,10 +200,57 @@ public sealed class EvaluateCommand : ICommand
             Row(o, "  undisturbed (mm)", d.UndisturbedMm);
         }
         PrintBendPlanes(r, o);
+        PrintProportions(r, o);
         if (r.Fingers == null) return;
         o.WriteLine(string.Create(inv, $"fingers on the solved body ({r.Fingers.Frames} frames, {r.Fingers.OpenHandFrames} hand-frames open): deepest penetration {r.Fingers.MaxPenetrationMm:0.00} mm"));
         foreach (Finger f in Enum.GetValues<Finger>())
             if (r.Fingers.Gap(f).Count > 0) Row(o, $"  {f} tip gap (mm)", r.Fingers.Gap(f));
+    }
+
+    // The wearer's true lengths, the measured ones and the calibrated avatar's; the unreachable hands.
+    internal static void PrintProportions(EvaluationReport r, TextWriter o)
+    {
+        var inv = CultureInfo.InvariantCulture;
+        CalibrationProfile p = r.Profile;
+        o.WriteLine(string.Create(inv, $"scale mode: {p.ScaleMode.ToString().ToLowerInvariant()}, proportions {p.Proportions}; hands unreachable in {r.UnreachedHandFrames} frames, {r.UnreachedWhileBentFrames} of them with the wearer's arm not fully stretched"));
+        BodyMeasurements m = p.Measurements, t = r.TrueMeasurements, a = r.AvatarMeasurements;
+        if (m == null || a == null) return;
+        o.WriteLine("segment (cm)           true   measured   ±     error   avatar   error");
+        var measured = m.All();
+        var avatar = a.All();
+        var truth = t?.All();
+        for (int i = 0; i < measured.Length; i++)
+        {
+            double tv = truth != null ? truth[i].value.Value * 100 : double.NaN, mv = measured[i].value.Value * 100, av = avatar[i].value.Value * 100;
+            o.WriteLine(string.Create(inv, $"  {measured[i].name,-18} {tv,7:0.0} {mv,8:0.0} {measured[i].value.Uncertainty * 100,5:0.0} {mv - tv,7:+0.0;-0.0} {av,8:0.0} {av - tv,7:+0.0;-0.0}"));
+        }
+    }
+
+    internal static object ProportionsJson(EvaluationReport r)
+    {
+        CalibrationProfile p = r.Profile;
+        var rows = new System.Collections.Generic.Dictionary<string, object>();
+        if (p.Measurements != null && r.AvatarMeasurements != null)
+        {
+            var measured = p.Measurements.All();
+            var avatar = r.AvatarMeasurements.All();
+            var truth = r.TrueMeasurements?.All();
+            for (int i = 0; i < measured.Length; i++)
+                rows[measured[i].name] = new
+                {
+                    true_m = truth != null ? truth[i].value.Value : (double?)null,
+                    measured_m = measured[i].value.Value,
+                    uncertainty_m = measured[i].value.Uncertainty,
+                    avatar_m = avatar[i].value.Value,
+                };
+        }
+        return new
+        {
+            scale_mode = p.ScaleMode.ToString().ToLowerInvariant(),
+            left_leg = p.Proportions.LeftLeg, right_leg = p.Proportions.RightLeg, left_arm = p.Proportions.LeftArm, right_arm = p.Proportions.RightArm,
+            unreached_while_bent_frames = r.UnreachedWhileBentFrames,
+            segments = rows,
+        };
     }
 
     // Knees and elbows bent the wrong way: the bend-plane angle error per joint.
@@ -237,6 +295,7 @@ public sealed class EvaluateCommand : ICommand
             mpjpe_mm = r.AllJointsMm.Mean,
             knee_angle_error_deg = r.KneeAngleDegrees.Median,
             unreached_hand_frames = r.UnreachedHandFrames,
+            proportions = ProportionsJson(r),
             role_swaps = r.RoleSwaps,
             joints = r.JointPositionMm.OrderBy(p => p.Key).ToDictionary(p => p.Key.ToString(), p => new { median_mm = p.Value.Median, p95_mm = p.Value.P95, max_mm = p.Value.Max }),
             disturbance = r.Disturbance == null ? null : new

@@ -40,6 +40,9 @@ public sealed class PackageLinter
     /// - Unity.XR.OpenXR: optional OpenXR device backend (com.unity.xr.openxr).
     /// - Unity.XR.Interaction.Toolkit: optional XRI integration (com.unity.xr.interaction.toolkit).
     /// - SteamVR: optional SteamVR plugin backend (trackers by serial/role).
+    /// - Unity.InputSystem: optional Input System source (com.unity.inputsystem), also the OpenXR tracker layout's base.
+    /// - Unity.XR.CoreUtils: optional XR Origin integration (com.unity.xr.core-utils).
+    /// - Unity.XR.OpenVR: the OpenVR API types of the OpenVR XR plug-in (com.valvesoftware.unity.openvr), for serials.
     /// Optional ones must sit behind defineConstraints/versionDefines so the package compiles without them.
     /// </summary>
     public static readonly IReadOnlyList<string> AllowedExternalAssemblies = new[]
@@ -49,6 +52,9 @@ public sealed class PackageLinter
         "Unity.XR.OpenXR",
         "Unity.XR.Interaction.Toolkit",
         "SteamVR",
+        "Unity.InputSystem",
+        "Unity.XR.CoreUtils",
+        "Unity.XR.OpenVR",
     };
 
     /// <summary>Files that must exist (relative to the package root).</summary>

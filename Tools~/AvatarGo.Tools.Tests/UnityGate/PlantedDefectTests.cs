@@ -145,4 +145,67 @@ public class PlantedDefectTests
         _copy.Replace("package.json", "\"dependencies\": {", "\"dependencies\": {\n    " + dependency);
         Assert.That(ModuleDependencies.Check(_copy.Root, result), Is.Empty);
     }
+
+    [Test]
+    public void AnOptionalPackageUsedOutsideItsGatedAssemblyFails()
+    {
+        // The Input System's surface is built (the package is in the project), but only AvatarGo.InputSystem references it.
+        _copy.Write("Runtime/Tracking/PlantedInputAction.cs",
+            "namespace AvatarGo\n{\n    internal static class PlantedInputAction\n    {\n" +
+            "        internal static object Make() => new UnityEngine.InputSystem.InputAction(\"x\");\n    }\n}\n");
+        GateResult result = Gate(new[] { "editor-2021.3" }, "AvatarGo");
+        AssertSingleError(result, "CS0234", "Runtime/Tracking/PlantedInputAction.cs", "'InputSystem' does not exist in the namespace 'UnityEngine'");
+    }
+
+    [Test]
+    public void AnXri2ControllerUsedWithoutItsVersionGuardFailsWithXri3()
+    {
+        // ActionBasedController is obsolete from XRI 3.0.0: the surface declares it so under XRI_3_OR_NEWER, which the gate
+        // defines from the configuration's XRI version (2.0.0 in editor-2021.3, 3.5.1 in editor-6000.5).
+        _copy.Write("Runtime/XRInteractionToolkit/PlantedController.cs",
+            "namespace AvatarGo\n{\n    internal static class PlantedController\n    {\n" +
+            "        internal static object Action(UnityEngine.XR.Interaction.Toolkit.ActionBasedController c) => c.positionAction;\n    }\n}\n");
+        GateResult result = Gate(new[] { "editor-2021.3", "editor-6000.5" }, "AvatarGo.XRInteractionToolkit");
+        GateDiagnostic error = AssertSingleError(result, "CS0618", "Runtime/XRInteractionToolkit/PlantedController.cs", "'ActionBasedController' is obsolete");
+        Assert.That(error.Configuration, Is.EqualTo("editor-6000.5"), "XRI 2.x has it; only XRI 3 deprecates it");
+        Assert.That(result.Errors.Select(e => e.Configuration).Distinct(), Is.EqualTo(new[] { "editor-6000.5" }), result.Describe());
+    }
+
+    [Test]
+    public void OpenVRApiWithoutTheOpenVRXRGuardFailsWithoutThePlugin()
+    {
+        // Without the OpenVR XR plug-in, openvr_api.cs's types live in the SteamVR assembly, which AvatarGo does not use:
+        // the serial lookup must stay under AVATARGO_OPENVR_XR, or the SteamVR-only configuration fails.
+        _copy.Replace("Runtime/SteamVR/SteamVRTrackingSource.cs", "#if AVATARGO_OPENVR_XR\n", "#if true\n");
+        GateResult result = Gate(new[] { "editor-2021.3", "editor-2021.3-partial" }, "AvatarGo.SteamVR");
+        Assert.That(result.Succeeded, Is.False, result.Describe());
+        Assert.That(result.Errors.Select(e => e.Configuration).Distinct(), Is.EqualTo(new[] { "editor-2021.3-partial" }), result.Describe());
+        Assert.That(result.Errors.Any(e => e.File == "Runtime/SteamVR/SteamVRTrackingSource.cs" && e.Message.Contains("ETrackedDeviceProperty")), Is.True, result.Describe());
+    }
+    [Test]
+    public void OpenXRFeatureAttributeWithoutItsEditorGuardFailsInThePlayerBuild()
+    {
+        // OpenXR declares OpenXRFeatureAttribute (namespace UnityEditor.XR.OpenXR.Features) in its runtime assembly, but
+        // only under #if UNITY_EDITOR: the Editor compiles the unguarded attribute, a player build does not.
+        const string feature = "Runtime/OpenXR/ViveTrackerFeature.cs";
+        _copy.Replace(feature, "#if UNITY_EDITOR\n    [UnityEditor.XR.OpenXR.Features.OpenXRFeature(", "#if true\n    [UnityEditor.XR.OpenXR.Features.OpenXRFeature(");
+        GateResult result = Gate(new[] { "editor-2021.3", "player-2021.3" }, "AvatarGo.OpenXR");
+        GateDiagnostic error = AssertSingleError(result, "CS0246", feature, "'UnityEditor' could not be found");
+        Assert.That(error.Configuration, Is.EqualTo("player-2021.3"));
+        Assert.That(result.Errors.Select(e => e.Configuration).Distinct(), Is.EqualTo(new[] { "player-2021.3" }), result.Describe());
+        Assert.That(result.Errors.All(e => e.File == feature && e.Message.Contains("UnityEditor")), Is.True, result.Describe());
+    }
+
+    [Test]
+    public void FindObjectOfTypeWithoutItsVersionGuardFailsFromUnity2023()
+    {
+        // Object.FindObjectOfType is obsolete (a warning, an error here as in a warnings-as-errors project) from 2023.1;
+        // the XR Origin setup uses FindAnyObjectByType there.
+        const string setup = "Runtime/XRInteractionToolkit/XROriginTrackingSetup.cs";
+        _copy.Replace(setup, "#if UNITY_2023_1_OR_NEWER\n            if (m_Origin == null) m_Origin = FindAnyObjectByType<XROrigin>();\n#else\n", "#if false\n#else\n");
+        GateResult result = Gate(new[] { "editor-2021.3", "editor-6000.5" }, "AvatarGo.XRInteractionToolkit");
+        GateDiagnostic error = AssertSingleError(result, "CS0618", setup, "FindObjectOfType");
+        Assert.That(error.Configuration, Is.EqualTo("editor-6000.5"));
+        Assert.That(result.Errors.Select(e => e.Configuration).Distinct(), Is.EqualTo(new[] { "editor-6000.5" }), result.Describe());
+    }
 }

@@ -63,12 +63,43 @@ public class UnityGateTests
     }
 
     [Test]
+    public void EachIntegrationCompilesExactlyWhereItsPackageIs()
+    {
+        string[] integrations = { "AvatarGo.InputSystem", "AvatarGo.OpenXR", "AvatarGo.SteamVR", "AvatarGo.XRInteractionToolkit" };
+        foreach (string name in new[] { "editor-2021.3", "editor-6000.5", "player-2021.3", "player-6000.5" })
+            Assert.That(Plan(name).Assemblies.Select(a => a.Name), Is.SupersetOf(integrations), name);
+        ConfigurationPlan bare = Plan("editor-2021.3-bare");
+        Assert.That(bare.Assemblies.Select(a => a.Name), Has.None.AnyOf(integrations));
+        Assert.That(bare.Skipped.Single(s => s.Name == "AvatarGo.SteamVR").Reason, Is.EqualTo("define constraint \"AVATARGO_STEAMVR\" does not hold"));
+        ConfigurationPlan partial = Plan("editor-2021.3-partial");
+        Assert.That(partial.Assemblies.Select(a => a.Name), Does.Contain("AvatarGo.XRInteractionToolkit").And.Contain("AvatarGo.SteamVR")
+            .And.Not.Contain("AvatarGo.InputSystem").And.Not.Contain("AvatarGo.OpenXR"));
+        AssemblyPlan xri = partial.Assemblies.Single(a => a.Name == "AvatarGo.XRInteractionToolkit");
+        Assert.That(xri.References, Does.Not.Contain("Unity.InputSystem").And.Not.Contain("Unity.XR.Interaction.Toolkit"), "references to absent packages are dropped");
+        Assert.That(xri.Defines, Does.Contain("AVATARGO_XR_CORE_UTILS").And.Not.Contain("AVATARGO_XRI_2"));
+        Assert.That(partial.Assemblies.Single(a => a.Name == "AvatarGo.SteamVR").Defines, Does.Not.Contain("AVATARGO_OPENVR_XR"));
+        Assert.That(Plan("editor-2021.3").Assemblies.Single(a => a.Name == "AvatarGo.SteamVR").Defines, Does.Contain("AVATARGO_OPENVR_XR"));
+        // XRI 2.0.0 in the oldest editor, 3.5.1 in the current one: each compiles its own side of the XRI version guards.
+        Assert.That(Plan("editor-2021.3").Assemblies.Single(a => a.Name == "AvatarGo.XRInteractionToolkit").Defines,
+            Does.Contain("AVATARGO_XRI_2").And.Not.Contain("AVATARGO_XRI_2_4_OR_NEWER"));
+        Assert.That(Plan("editor-6000.5").Assemblies.Single(a => a.Name == "AvatarGo.XRInteractionToolkit").Defines,
+            Does.Contain("AVATARGO_XRI_2_4_OR_NEWER").And.Not.Contain("AVATARGO_XRI_2"));
+        Assert.That(Plan("editor-2021.3").Assemblies.Single(a => a.Name == "AvatarGo.OpenXR").Defines, Does.Not.Contain("AVATARGO_OPENXR_1_9_OR_NEWER"));
+        Assert.That(Plan("editor-6000.5").Assemblies.Single(a => a.Name == "AvatarGo.OpenXR").Defines, Does.Contain("AVATARGO_OPENXR_1_9_OR_NEWER"));
+    }
+
+    [Test]
     public void PlayersCompileTheRuntimeWithoutTheEditor()
     {
         foreach (string name in new[] { "player-2021.3", "player-6000.5" })
         {
             ConfigurationPlan player = Plan(name);
-            Assert.That(player.Assemblies.Select(a => a.Name), Is.EquivalentTo(new[] { "UnityEngine", "AvatarGo.Core", "AvatarGo" }), name);
+            Assert.That(player.Assemblies.Select(a => a.Name), Is.EquivalentTo(new[]
+            {
+                "UnityEngine", "AvatarGo.Core", "AvatarGo",
+                "Unity.InputSystem", "Unity.XR.OpenXR", "Unity.XR.CoreUtils", "Unity.XR.Interaction.Toolkit", "Unity.XR.OpenVR", "SteamVR",
+                "AvatarGo.InputSystem", "AvatarGo.OpenXR", "AvatarGo.SteamVR", "AvatarGo.XRInteractionToolkit",
+            }), name);
             Assert.That(player.Assemblies.SelectMany(a => a.Defines), Does.Not.Contain("UNITY_EDITOR"), name);
             Assert.That(player.Skipped.Single(s => s.Name == "AvatarGo.Simulation").Reason, Does.Contain("UNITY_EDITOR || UNITY_INCLUDE_TESTS"), name);
         }

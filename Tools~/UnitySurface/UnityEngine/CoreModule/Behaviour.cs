@@ -6,5 +6,7 @@ namespace UnityEngine
     public class Behaviour : Component
     {
         public bool enabled { get => throw null; set => throw null; }
+
+        public bool isActiveAndEnabled => throw null;
     }
 }

@@ -7,11 +7,21 @@ namespace UnityEngine
     // UnityCsReference@2021.3 Runtime/Export/Scripting/UnityEngineObject.bindings.cs
     public class Object
     {
+        public string name { get => throw null; set => throw null; }
+
+#if UNITY_2023_1_OR_NEWER
+        [System.Obsolete("Object.FindObjectOfType has been deprecated. Use Object.FindFirstObjectByType instead or if finding any instance is acceptable the faster Object.FindAnyObjectByType", false)]
+#endif
+        public static T FindObjectOfType<T>() where T : Object => throw null;
+
+        // From 2021.3.18f1 (engine-api.md T5); declared where every release has it.
+#if UNITY_2023_1_OR_NEWER
+        public static T FindAnyObjectByType<T>() where T : Object => throw null;
+#endif
+
         public static bool operator ==(Object x, Object y) => throw null;
 
         public static bool operator !=(Object x, Object y) => throw null;
-
-        public string name { get => throw null; set => throw null; }
 
         public static T Instantiate<T>(T original, Transform parent) where T : Object => throw null;
 

@@ -1,0 +1,154 @@
+using AvatarGo.Core;
+using UnityEngine;
+using Valve.VR;
+
+namespace AvatarGo
+{
+    /// <summary>
+    /// Devices read through the SteamVR Unity Plugin's input system (2.7.3 or newer, imported into Assets; this assembly
+    /// compiles only when the scripting define <c>AVATARGO_STEAMVR</c> is set, as the plug-in sets none): one pose action
+    /// read for the input sources <c>Head</c>, <c>LeftHand</c>, <c>RightHand</c>, <c>Waist</c>, <c>LeftFoot</c> and
+    /// <c>RightFoot</c>, and the controllers' trigger (analog and button) and grip. The trackers' roles are the SteamVR roles
+    /// their bindings give (Manage Trackers, then a binding of the pose action for the controller types
+    /// <c>vive_tracker_waist</c>, <c>vive_tracker_left_foot</c>, <c>vive_tracker_right_foot</c>): without those bindings the
+    /// trackers stay lost. Serials come from OpenVR once a device is bound (when the OpenVR XR plug-in provides the OpenVR
+    /// API), and give a new header. Poses are in SteamVR's tracking universe: set <see cref="AvatarGoTrackingSource.TrackingSpaceOrigin"/>
+    /// to the rig object the SteamVR poses are relative to.
+    /// </summary>
+    [AddComponentMenu("XR/AvatarGo/SteamVR Tracking Source")]
+    [HelpURL(AvatarGoDocs.Manual + "tracking-sources.md#steamvr-tracking-source")]
+    [DisallowMultipleComponent]
+    public sealed class SteamVRTrackingSource : AvatarGoTrackingSource
+    {
+        private const uint NoDevice = 0xFFFFFFFFu; // OpenVR k_unTrackedDeviceIndexInvalid
+
+        [SerializeField, Tooltip("The SteamVR pose action read for every role (its full path). Bind it for the HMD and the tracker roles in the SteamVR binding UI.")]
+        private string m_PoseAction = "/actions/default/in/Pose";
+
+        [SerializeField, Tooltip("Optional: the HMD's transform (the XR camera), used instead of the pose action's Head source, which SteamVR's default bindings leave unbound.")]
+        private Transform m_Head;
+
+        [SerializeField, Tooltip("The analog trigger (a Single action, 0..1). Empty: none.")]
+        private string m_TriggerAction = "/actions/default/in/Squeeze";
+
+        [SerializeField, Tooltip("The trigger button (a Boolean action). Empty: none.")]
+        private string m_TriggerButtonAction = "/actions/default/in/GrabPinch";
+
+        [SerializeField, Tooltip("The grip (a Boolean action, reported as grip 1 or 0). Empty: none.")]
+        private string m_GripAction = "/actions/default/in/GrabGrip";
+
+        private readonly RoleSlotDevices _slots = new RoleSlotDevices();
+        private readonly TriggerEdges _edges = new TriggerEdges(BodyRoles.Count);
+        private readonly uint[] _deviceIndex = { NoDevice, NoDevice, NoDevice, NoDevice, NoDevice, NoDevice };
+        private SteamVR_Action_Pose _pose;
+        private SteamVR_Action_Single _trigger;
+        private SteamVR_Action_Boolean _triggerButton;
+        private SteamVR_Action_Boolean _grip;
+
+        /// <summary>The HMD transform used instead of the pose action's Head source, or null.</summary>
+        public Transform Head { get => m_Head; set => m_Head = value; }
+
+        /// <inheritdoc/>
+        public override SessionHeader Header => _slots.Header;
+
+        private void OnEnable()
+        {
+            if (string.IsNullOrEmpty(m_PoseAction))
+            {
+                Debug.LogError("AvatarGo: the SteamVR Tracking Source has no pose action path; it is disabled.", this);
+                enabled = false;
+            }
+        }
+
+        // The actions are looked up once SteamVR's input is initialized (before, SteamVR_Input only makes placeholders).
+        // A pose action the project's actions lack is a setup error: logged once, and the source disables itself.
+        private bool ResolveActions()
+        {
+            _pose = SteamVR_Input.GetPoseActionFromPath(m_PoseAction);
+            if (_pose == null)
+            {
+                Debug.LogError("AvatarGo: the SteamVR Tracking Source found no pose action '" + m_PoseAction +
+                               "' in the project's SteamVR actions (Window > SteamVR Input); it is disabled.", this);
+                enabled = false;
+                return false;
+            }
+            _trigger = string.IsNullOrEmpty(m_TriggerAction) ? null : SteamVR_Input.GetSingleActionFromPath(m_TriggerAction);
+            _triggerButton = string.IsNullOrEmpty(m_TriggerButtonAction) ? null : SteamVR_Input.GetBooleanActionFromPath(m_TriggerButtonAction);
+            _grip = string.IsNullOrEmpty(m_GripAction) ? null : SteamVR_Input.GetBooleanActionFromPath(m_GripAction);
+            return true;
+        }
+
+        private void OnDisable()
+        {
+            for (int d = 0; d < BodyRoles.Count; d++)
+            {
+                _edges.Forget(d);
+                _deviceIndex[d] = NoDevice;
+            }
+        }
+
+        /// <inheritdoc/>
+        public override void Read(SessionFrame frame)
+        {
+            if (frame == null) return;
+            frame.Clear();
+            frame.Time = Time.timeAsDouble;
+            if (frame.Samples.Length < BodyRoles.Count || !isActiveAndEnabled) return;
+            if (m_Head != null) frame.Samples[0] = new DeviceSample(ToTrackingSpace(m_Head), true);
+            if (!SteamVR_Input.initialized) return; // before SteamVR starts: only the head transform
+            if (_pose == null && !ResolveActions()) return;
+            for (int d = m_Head != null ? 1 : 0; d < BodyRoles.Count; d++)
+            {
+                SteamVR_Input_Sources source = Source(BodyRoles.All[d]);
+                bool connected = _pose.GetDeviceIsConnected(source);
+                if (connected) NoteDevice(d, _pose.GetDeviceIndex(source));
+                frame.Samples[d] = connected && _pose.GetPoseIsValid(source)
+                    ? new DeviceSample(new RigidPose(_pose.GetLocalPosition(source).ToCore(), _pose.GetLocalRotation(source).ToCore()), true)
+                    : DeviceSample.Lost;
+            }
+            if (m_Head != null) NoteDevice(0, 0u); // the HMD is OpenVR's device 0 (k_unTrackedDeviceIndex_Hmd)
+            for (int side = 0; side < 2; side++)
+            {
+                DeviceRole hand = BodyRoles.Hand((BodySide)side);
+                int d = BodyRoles.IndexOf(hand);
+                SteamVR_Input_Sources source = Source(hand);
+                float trigger = _trigger != null ? _trigger.GetAxis(source) : float.NaN;
+                bool button = _triggerButton != null && _triggerButton.GetState(source);
+                frame.Trigger[d] = trigger;
+                frame.Grip[d] = _grip == null ? float.NaN : _grip.GetState(source) ? 1f : 0f;
+                _edges.Feed(d, d, trigger, button, frame.Events);
+            }
+        }
+
+        private RigidPose ToTrackingSpace(Transform device)
+        {
+            RigidPose world = device.GetWorldPose();
+            return TrackingSpaceOrigin == null ? world : GetTrackingSpace().ToTracking(world);
+        }
+
+        // A device newly bound to a role: its OpenVR serial (allocates; once per change of device).
+        private void NoteDevice(int d, uint deviceIndex)
+        {
+            if (deviceIndex == _deviceIndex[d]) return;
+            _deviceIndex[d] = deviceIndex;
+#if AVATARGO_OPENVR_XR
+            if (deviceIndex == NoDevice || !SteamVR.active) return;
+            string serial = SteamVR.instance.GetStringProperty(ETrackedDeviceProperty.Prop_SerialNumber_String, deviceIndex);
+            if (_slots.SetSerial(BodyRoles.All[d], serial)) HeaderVersion++;
+#endif
+        }
+
+        private static SteamVR_Input_Sources Source(DeviceRole role)
+        {
+            switch (role)
+            {
+                case DeviceRole.Head: return SteamVR_Input_Sources.Head;
+                case DeviceRole.LeftHand: return SteamVR_Input_Sources.LeftHand;
+                case DeviceRole.RightHand: return SteamVR_Input_Sources.RightHand;
+                case DeviceRole.Pelvis: return SteamVR_Input_Sources.Waist;
+                case DeviceRole.LeftFoot: return SteamVR_Input_Sources.LeftFoot;
+                default: return SteamVR_Input_Sources.RightFoot;
+            }
+        }
+    }
+}
