@@ -34,10 +34,17 @@ namespace AvatarGo.Samples
         [SerializeField, Tooltip("Diameter of the cube drawn at each device (m).")]
         private float m_DeviceSize = 0.05f;
 
+        [SerializeField, Tooltip("A camera that keeps the mannequin in view (empty: the camera stays where it is).")]
+        private Transform m_Camera = null;
+
+        [SerializeField, Tooltip("Where the camera stands relative to the mannequin's hips, in world axes (m).")]
+        private Vector3 m_CameraOffset = new Vector3(1.6f, 0.4f, 2.4f);
+
         private RecordedSessionTrackingSource _source;
         private AvatarGoCalibrator _calibrator;
         private readonly TruthErrorMeter _meter = new TruthErrorMeter();
         private Transform[] _devices = Array.Empty<Transform>();
+        private Transform _hips;
         private string _problem;
 
         private void Start()
@@ -65,6 +72,8 @@ namespace AvatarGo.Samples
                 Fail("the mannequin is not a valid humanoid");
                 return;
             }
+
+            _hips = mannequin.GetBoneTransform(HumanBodyBones.Hips);
 
             // The components, configured while their object is inactive so that they start with their settings.
             var rig = new GameObject("AvatarGo");
@@ -116,6 +125,16 @@ namespace AvatarGo.Samples
                 cube.transform.localScale = new Vector3(m_DeviceSize, m_DeviceSize, m_DeviceSize);
                 _devices[d] = cube.transform;
             }
+        }
+
+        // After the driver posed the mannequin: the camera looks at its hips from the same side all along.
+        private void LateUpdate()
+        {
+            if (m_Camera == null || _hips == null) return;
+            RigidPose hips = _hips.GetWorldPose();
+            System.Numerics.Vector3 eye = hips.Position + m_CameraOffset.ToCore();
+            System.Numerics.Quaternion look = Rotations.LookRotation(hips.Position - eye, System.Numerics.Vector3.UnitY);
+            m_Camera.SetWorldPose(new RigidPose(eye, look));
         }
 
         // Replays the session from its start with the other offset mode: the calibration runs again on the same motion.

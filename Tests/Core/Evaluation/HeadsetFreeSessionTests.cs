@@ -13,6 +13,8 @@ namespace AvatarGo.Core.Tests
     /// </summary>
     public class HeadsetFreeSessionTests
     {
+        private const string SampleMotion = "Samples~/HeadsetFree/Motion/mixamo_fingers_30fps.bvh.txt";
+
         private string _folder;
 
         [SetUp]
@@ -24,7 +26,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void TheSamplesSessionCalibratesAndFollowsTheWearer()
         {
-            string clip = File.ReadAllText(TestData.Mocap("mixamo_fingers_30fps.bvh"));
+            string clip = File.ReadAllText(TestData.InPackage(SampleMotion));
             string path = Path.Combine(_folder, "AvatarGo", "headset-free.agsession");
             HumanoidMap wearer = HeadsetFreeSession.Write(clip, "mixamo_fingers_30fps.bvh.txt", path, new SimulationOptions { Rate = 60 });
 
@@ -49,6 +51,24 @@ namespace AvatarGo.Core.Tests
             // The figures of pipeline.md for this clip with exact offsets (MPJPE about 11 mm, end effectors a few mm).
             Assert.That(meter.MeanMm, Is.LessThan(20), "MPJPE (mm)");
             Assert.That(meter.MeanEndEffectorMm, Is.LessThan(8), "end effectors (mm)");
+        }
+
+        [Test]
+        public void TheSamplesMotionIsTheTestClipWithPlainWhitespace()
+        {
+            // The sample ships the Mixamo clip as a text asset with LF line ends and spaces (PVS checks .txt files).
+            BvhClip shipped = BvhReader.ReadFile(TestData.InPackage(SampleMotion), new BvhReadOptions { ToMetres = true });
+            BvhClip test = BvhReader.ReadFile(TestData.Mocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            Assert.That(shipped.Skeleton.Names, Is.EqualTo(test.Skeleton.Names));
+            Assert.That(shipped.FrameCount, Is.EqualTo(test.FrameCount));
+            var a = new RigidPose[shipped.Skeleton.JointCount];
+            var b = new RigidPose[test.Skeleton.JointCount];
+            for (int f = 0; f < shipped.FrameCount; f += 37)
+            {
+                shipped.GetLocalPoses(f, a);
+                test.GetLocalPoses(f, b);
+                for (int j = 0; j < a.Length; j++) Approx.Near(b[j], a[j], 1e-6f, 1e-3f, $"frame {f} {shipped.Skeleton.GetName(j)}");
+            }
         }
 
         [Test]

@@ -846,7 +846,7 @@ public sealed class PackageLinter
     }
 
     private IEnumerable<string> Asmdefs() =>
-        Files.Where(f => f.EndsWith(".asmdef", StringComparison.Ordinal) && IsImported(f) && CodeRoots.Contains(f.Split('/')[0]));
+        Files.Where(f => f.EndsWith(".asmdef", StringComparison.Ordinal) && IsImported(f) && (CodeRoots.Contains(f.Split('/')[0]) || f.StartsWith("Samples~/", StringComparison.Ordinal)));
 
     private static bool InTildeFolder(string relative)
     {
