@@ -100,7 +100,7 @@ namespace AvatarGo.Core.Tests
             facts.CullsAlwaysAnimate = false;
             facts.AppliesRootMotion = true;
             var fixes = AvatarSetupCheck.Check(facts).Select(f => f.Fix).ToList();
-            Assert.That(fixes, Does.Contain(SetupFix.CullAlwaysAnimate).And.Contain(SetupFix.DisableRootMotion));
+            Assert.That(fixes.Contains(SetupFix.CullAlwaysAnimate) && fixes.Contains(SetupFix.DisableRootMotion), Is.True, string.Join(", ", fixes));
         }
     }
 }
