@@ -23,6 +23,8 @@ def importer(path):
                 "  executionOrder: 0\n  icon: {instanceID: 0}\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n")
     if ext == '.asmdef':
         return "AssemblyDefinitionImporter:\n" + TAIL
+    if ext == '.prefab':
+        return "PrefabImporter:\n" + TAIL
     if ext == '.asmref':
         return "AssemblyDefinitionReferenceImporter:\n" + TAIL
     if ext in ('.md', '.txt', '.json', '.xml', '.csv', '.bytes', '.bvh', '.html', '.yaml', '.yml'):

@@ -207,6 +207,7 @@ public sealed class PackageLinter
             case ".md":
             case ".json":
             case ".txt": return "TextScriptImporter|DefaultImporter";
+            case ".prefab": return "PrefabImporter";
             default: return null;
         }
     }
