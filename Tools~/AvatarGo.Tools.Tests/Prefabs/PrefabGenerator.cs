@@ -21,7 +21,7 @@ namespace AvatarGo.Tools.Tests.Prefabs;
 /// </summary>
 /// <remarks>
 /// The layout: the root <c>AvatarGo</c> carries the calibrator and the fingers, its child <c>Tracking</c> the tracking
-/// source (a <c>TransformTrackingSource</c>; the menu item connects it to an XR Origin). The calibrator's avatar slots
+/// source (the default, <c>XRInputDevicesTrackingSource</c>: Unity XR input devices). The calibrator's avatar slots
 /// (<c>m_Animator</c>, <c>m_AvatarRoot</c>) are empty; with <c>m_Driver</c> = Animator IK the calibrator adds the
 /// <c>AvatarGoAnimatorIKDriver</c> to the assigned avatar's Animator (it needs the Animator on its own object, which an
 /// empty slot cannot have), and the editor does the same when the avatar is assigned in the inspector. The fingers hold
@@ -68,7 +68,7 @@ public sealed class PrefabGenerator
     {
         Node root = NewNode("AvatarGo", null);
         Node tracking = NewNode("Tracking", root);
-        Component source = Add(tracking, "TransformTrackingSource");
+        Component source = Add(tracking, "XRInputDevicesTrackingSource");
         Component calibrator = Add(root, "AvatarGoCalibrator");
         Component fingers = Add(root, "AvatarGoFingers");
         calibrator.Wiring["m_Source"] = Local(source.Id);

@@ -54,7 +54,7 @@ public class PrefabGeneratorTests
         UnityYamlObject Script(string name) => objects.Single(o => o.ClassId == 114 && Scalar(o.Body, "m_Script", "guid") == ScriptGuid(name));
         UnityYamlObject calibrator = Script("Calibration/AvatarGoCalibrator.cs");
         UnityYamlObject fingers = Script("Hands/AvatarGoFingers.cs");
-        UnityYamlObject source = Script("Tracking/TransformTrackingSource.cs");
+        UnityYamlObject source = Script("Tracking/XRInputDevicesTrackingSource.cs");
 
         Assert.That(Scalar(calibrator.Body, "m_Source", "fileID"), Is.EqualTo(source.FileId.ToString()), "the calibrator reads the prefab's tracking source");
         Assert.That(Scalar(fingers.Body, "m_Calibrator", "fileID"), Is.EqualTo(calibrator.FileId.ToString()), "the fingers follow the prefab's calibrator");
