@@ -56,6 +56,18 @@ namespace AvatarGo.Core.Tests
             Assert.That(TrackingSetupCheck.Check(new TrackingSetupFacts { HasSource = true, HasTrackingSpaceOrigin = true }), Is.Empty);
         }
 
+        [Test]
+        public void WithoutAHeadBoneTheInspectorShowsNoHeightWarning()
+        {
+            // The inspector cannot measure a height without the head (it leaves HeadAboveFeet unset): only the missing bone is reported.
+            var facts = new AvatarFacts { HasAnimator = true, HasAvatar = true, AvatarIsValid = true, AvatarIsHuman = true, HeadAboveFeet = float.NaN };
+            foreach (HumanoidBone bone in HumanoidBones.Required)
+                if (bone != HumanoidBone.Head) facts.Bones.Add(bone);
+            IReadOnlyList<SetupFinding> findings = AvatarSetupCheck.Check(facts);
+            Assert.That(findings.Any(f => f.Message.Contains("above its feet")), Is.False, string.Join("\n", findings));
+            Assert.That(findings.Single(f => f.Severity == SetupSeverity.Error).Message, Does.Contain("Head"));
+        }
+
         [TestCase("walk.agsession", RecordingFileKind.Session, "walk.agsession.txt")]
         [TestCase("walk.AGSESSION.txt", RecordingFileKind.Session, "walk.agsession.txt")]
         [TestCase("Take 01.bvh", RecordingFileKind.Bvh, "Take 01.bvh.txt")]
