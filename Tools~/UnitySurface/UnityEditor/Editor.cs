@@ -1,5 +1,7 @@
 // Compile-only Unity API surface (see Tools~/UnitySurface/README.md): only what the package uses, as Unity declares it.
 
+using UnityObject = UnityEngine.Object;
+
 namespace UnityEditor
 {
     // UnityCsReference@2021.3 Editor/Mono/Inspector/Editor.cs
@@ -7,7 +9,7 @@ namespace UnityEditor
     public partial class Editor : UnityEngine.ScriptableObject
     {
         // Setting it throws InvalidOperationException ("You can't set the target on an editor").
-        public UnityEngine.Object target { get => throw null; set => throw null; }
+        public UnityObject target { get => throw null; set => throw null; }
 
         public bool DrawDefaultInspector() => throw null;
 
