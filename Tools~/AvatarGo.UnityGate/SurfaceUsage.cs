@@ -149,6 +149,14 @@ public static class SurfaceUsage
                             Add(fi.MoveNextMethod);
                             Add(fi.CurrentProperty);
                         }
+                        // An override needs the virtual member it overrides (an Editor's OnInspectorGUI).
+                        if (node is MethodDeclarationSyntax or PropertyDeclarationSyntax or EventDeclarationSyntax)
+                            switch (model.GetDeclaredSymbol(node))
+                            {
+                                case IMethodSymbol { OverriddenMethod: not null } om: Add(om.OverriddenMethod); break;
+                                case IPropertySymbol { OverriddenProperty: not null } op: Add(op.OverriddenProperty); break;
+                                case IEventSymbol { OverriddenEvent: not null } oe: Add(oe.OverriddenEvent); break;
+                            }
                         if (node is BaseTypeDeclarationSyntax or DelegateDeclarationSyntax)
                             for (ITypeSymbol t = (model.GetDeclaredSymbol(node) as INamedTypeSymbol)?.BaseType; t != null; t = t.BaseType) Add(t);
                     }

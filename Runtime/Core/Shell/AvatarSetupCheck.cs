@@ -83,6 +83,8 @@ namespace AvatarGo.Core
                 findings.Add(new SetupFinding(SetupSeverity.Error, $"The avatar's scale {Format(s)} mirrors it: left and right would swap. Use a positive scale."));
             else if (largest - smallest > UniformScaleTolerance * largest)
                 findings.Add(new SetupFinding(SetupSeverity.Warning, $"The avatar's scale {Format(s)} is not uniform: bones stretch as they turn. Calibration scales the avatar uniformly to the wearer anyway.", SetupFix.MakeScaleUniform));
+            // Without the head or both feet there is no height to judge (the missing bones are reported already).
+            if (!facts.Bones.Contains(HumanoidBone.Head) || !(facts.Bones.Contains(HumanoidBone.LeftFoot) || facts.Bones.Contains(HumanoidBone.RightFoot))) return;
             float h = facts.HeadAboveFeet;
             if (float.IsNaN(h) || h < ShortestPlausibleHeight || h > TallestPlausibleHeight)
             {

@@ -11,5 +11,10 @@ namespace AvatarGo.Core
         DisableRootMotion,
         /// <summary>Make the avatar's scale uniform (x = y = z), keeping its height.</summary>
         MakeScaleUniform,
+        /// <summary>
+        /// Connect the tracking source to the scene's XR Origin: add an XR Origin Tracking Setup, which sets the source's
+        /// tracking-space origin to the origin's camera offset (needs XR Core Utilities).
+        /// </summary>
+        ConnectXROrigin,
     }
 }

@@ -8,6 +8,9 @@ namespace UnityEngine
         // Read it in Awake or later, not in a field initializer.
         public static string persistentDataPath => throw null;
 
+        // In the Editor: the project's Assets folder (<project>/Assets).
+        public static string dataPath => throw null;
+
         // After LateUpdate, before rendering (XR pose drivers refresh the camera here too).
         // UnityCsReference@2021.3 Runtime/Export/Application/Application.cs
         public static event UnityEngine.Events.UnityAction onBeforeRender { add => throw null; remove => throw null; }
