@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Writes a Unity .meta (fresh random GUID, importer matching the file kind) for every package file
 and folder that lacks one. Never touches an existing .meta. Skips `~` folders and dot entries, which
-Unity does not import. Usage: python3 "Tools~/make-metas.py" [package-root]"""
+Unity does not import, except the contents of each sample (Samples~/NAME/...), which the Package
+Manager copies into Assets with their .meta files (a sample scene refers to its scripts by GUID).
+Usage: python3 "Tools~/make-metas.py" [package-root]"""
 import os, sys, uuid
 
 ROOT_ENTRIES = {'package.json', 'README.md', 'CHANGELOG.md', 'LICENSE.md', 'Third Party Notices.md',
@@ -21,23 +23,36 @@ def importer(path):
                 "  executionOrder: 0\n  icon: {instanceID: 0}\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n")
     if ext == '.asmdef':
         return "AssemblyDefinitionImporter:\n" + TAIL
+    if ext == '.prefab':
+        return "PrefabImporter:\n" + TAIL
     if ext == '.asmref':
         return "AssemblyDefinitionReferenceImporter:\n" + TAIL
     if ext in ('.md', '.txt', '.json', '.xml', '.csv', '.bytes', '.bvh', '.html', '.yaml', '.yml'):
         return "TextScriptImporter:\n" + TAIL
     return "DefaultImporter:\n" + TAIL
 
+def walk(root, top, only):
+    """Yields (folder, dirs, files) under top as os.walk does, skipping what Unity never imports."""
+    for d, dirs, files in os.walk(top):
+        rel = os.path.relpath(d, top)
+        dirs[:] = sorted(x for x in dirs if not x.endswith('~') and not x.startswith('.')
+                         and x not in ('bin', 'obj'))
+        if rel == '.' and only is not None:
+            dirs[:] = [x for x in dirs if x in only]
+            files = [x for x in files if x in only]
+        yield d, dirs, files
+
 def main():
     root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), '..'))
     written = 0
-    for d, dirs, files in os.walk(root):
-        rel = os.path.relpath(d, root)
-        dirs[:] = sorted(x for x in dirs if not x.endswith('~') and not x.startswith('.')
-                         and x not in ('bin', 'obj'))
+    tops = [(root, ROOT_ENTRIES)]
+    samples = os.path.join(root, 'Samples~')
+    if os.path.isdir(samples):
+        tops += [(os.path.join(samples, n), None) for n in sorted(os.listdir(samples))
+                 if os.path.isdir(os.path.join(samples, n)) and not n.startswith('.') and not n.endswith('~')]
+    for d, dirs, files in (entry for top, only in tops for entry in walk(root, top, only)):
         for n in sorted(files + dirs):
             if n.endswith('.meta') or n.startswith('.'):
-                continue
-            if rel == '.' and n not in ROOT_ENTRIES:
                 continue
             path = os.path.join(d, n)
             meta = path + '.meta'

@@ -142,6 +142,12 @@ namespace AvatarGo
         /// <summary>Which bone transforms take the calibration's proportions, and where they are (null before <c>Start</c> binds the avatar).</summary>
         public ProportionedBones Bones => _bones;
 
+        /// <summary>Whether the saved calibration is restored on start (read in <c>Start</c>); samples and tests that must calibrate turn it off.</summary>
+        public bool RestoresSavedProfileOnStart { get => m_RestoreSavedProfile; set => m_RestoreSavedProfile = value; }
+
+        /// <summary>Whether each new calibration is saved to <see cref="ProfilePath"/>.</summary>
+        public bool SavesProfile { get => m_SaveProfile; set => m_SaveProfile = value; }
+
         /// <summary>Diameter of the device markers (m).</summary>
         public float MarkerSize => m_MarkerSize;
 

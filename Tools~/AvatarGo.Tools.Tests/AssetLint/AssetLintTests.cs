@@ -212,6 +212,20 @@ MonoBehaviour:
     }
 
     [Test]
+    public void ASamplesAssetsAreLintedAsTheyWouldBeImported()
+    {
+        // The Package Manager copies Samples~/NAME into Assets when the user imports it: its scenes are checked like the
+        // package's own assets (here a field the script lacks), while a `~` folder inside the sample is still skipped.
+        string scene = Prefab.Replace("\r\n", "\n").Replace("  mode: 0\n", "  mode: 0\n  headTarget: {fileID: 400}\n");
+        Write("Samples~/Demo/Demo.unity", scene);
+        Write("Samples~/Demo/Extra~/Ignored.unity", "not yaml at all");
+        var linter = new AssetLinter(_root);
+        Assert.That(linter.Assets, Is.EqualTo(new[] { "Runtime/Prefabs/AvatarGo.prefab", "Samples~/Demo/Demo.unity" }));
+        AssertOnly(Lint(), "Samples~/Demo/Demo.unity");
+        Assert.That(Lint()[0], Does.Contain("sets 'headTarget', but AvatarRig has no such field"));
+    }
+
+    [Test]
     public void FieldTheClassLacksIsReported()
     {
         PlantInPrefab("  mode: 0\n", "  mode: 0\n  headTarget: {fileID: 400}\n");

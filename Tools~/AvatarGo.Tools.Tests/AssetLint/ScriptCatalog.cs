@@ -51,6 +51,13 @@ public sealed class ScriptCatalog
         "Collider", "Rigidbody", "InputActionAsset", "InputActionReference",
     };
 
+    /// <summary>
+    /// Unity's classes the serializer writes by value: <c>UnityEvent</c> and, from Unity 2020.1, the generic
+    /// <c>UnityEvent&lt;T0..T3&gt;</c> fields themselves (Unity manual, "Script serialization"); each is written as
+    /// <c>m_PersistentCalls: {m_Calls: [...]}</c>.
+    /// </summary>
+    public static readonly IReadOnlySet<string> UnitySerializableClasses = new HashSet<string>(StringComparer.Ordinal) { "UnityEvent" };
+
     private static readonly IReadOnlySet<string> Primitives = new HashSet<string>(StringComparer.Ordinal)
     {
         "bool", "byte", "sbyte", "short", "ushort", "int", "uint", "long", "ulong", "float", "double", "char", "string",
@@ -126,6 +133,10 @@ public sealed class ScriptCatalog
                 return inCollection ? "an array inside an array or List is not serialized" : WhyNotSerializable(array.ElementType, inCollection: true);
             case GenericNameSyntax { Identifier.Text: "List", TypeArgumentList.Arguments.Count: 1 } list:
                 return inCollection ? "a List inside an array or List is not serialized" : WhyNotSerializable(list.TypeArgumentList.Arguments[0], inCollection: true);
+            case GenericNameSyntax { TypeArgumentList.Arguments.Count: <= 4 } evt when UnitySerializableClasses.Contains(evt.Identifier.Text):
+                foreach (TypeSyntax argument in evt.TypeArgumentList.Arguments)
+                    if (WhyNotSerializable(argument, inCollection: true) is string why) return $"{evt}: {why}";
+                return null;
             case GenericNameSyntax generic:
                 return $"{generic.Identifier.Text}<...> is not a type Unity serializes";
             case QualifiedNameSyntax qualified:
@@ -136,7 +147,7 @@ public sealed class ScriptCatalog
                 return Primitives.Contains(predefined.Keyword.Text) ? null : $"{predefined.Keyword.Text} is not a type Unity serializes";
             case IdentifierNameSyntax name:
                 string n = name.Identifier.Text;
-                if (Primitives.Contains(n) || UnityValueTypes.Contains(n) || UnityObjectTypes.Contains(n)) return null;
+                if (Primitives.Contains(n) || UnityValueTypes.Contains(n) || UnityObjectTypes.Contains(n) || UnitySerializableClasses.Contains(n)) return null;
                 ScriptType t = Find(n);
                 if (t == null) return $"{n} is neither a Unity-serializable type nor a type of the package";
                 if (t.Kind == "enum") return null;

@@ -207,6 +207,7 @@ public sealed class PackageLinter
             case ".md":
             case ".json":
             case ".txt": return "TextScriptImporter|DefaultImporter";
+            case ".prefab": return "PrefabImporter";
             default: return null;
         }
     }
@@ -830,17 +831,23 @@ public sealed class PackageLinter
     // ---------------------------------------------------------------------------------------------
     // Helpers
 
-    /// <summary>True when Unity imports the path: no `~` or dot segment, under a <see cref="RootAssets"/> entry.</summary>
+    /// <summary>
+    /// True when Unity imports the path: no `~` or dot segment, under a <see cref="RootAssets"/> entry; or inside a
+    /// sample (`Samples~/NAME/...`, by the same rules below NAME), which the Package Manager copies into the project's
+    /// Assets with its .meta files when the user imports it. The sample's own folder is not imported (Unity names it).
+    /// </summary>
     public static bool IsImported(string relative)
     {
         string[] parts = relative.Split('/');
-        if (parts.Any(p => p.Length == 0 || p.StartsWith(".", StringComparison.Ordinal) || p.EndsWith("~", StringComparison.Ordinal)))
+        if (parts.Length > 2 && parts[0] == "Samples~")
+            parts = parts.Skip(2).ToArray();
+        else if (!RootAssets.Contains(parts[0]))
             return false;
-        return RootAssets.Contains(parts[0]);
+        return !parts.Any(p => p.Length == 0 || p.StartsWith(".", StringComparison.Ordinal) || p.EndsWith("~", StringComparison.Ordinal));
     }
 
     private IEnumerable<string> Asmdefs() =>
-        Files.Where(f => f.EndsWith(".asmdef", StringComparison.Ordinal) && IsImported(f) && CodeRoots.Contains(f.Split('/')[0]));
+        Files.Where(f => f.EndsWith(".asmdef", StringComparison.Ordinal) && IsImported(f) && (CodeRoots.Contains(f.Split('/')[0]) || f.StartsWith("Samples~/", StringComparison.Ordinal)));
 
     private static bool InTildeFolder(string relative)
     {

@@ -10,7 +10,7 @@ namespace AvatarGo.Tools.Tests.UnityGate;
 /// </summary>
 public sealed class PackageCopy : IDisposable
 {
-    private static readonly string[] Copied = { "package.json", "Runtime", "Editor", "Tests", "Tools~/UnitySurface" };
+    private static readonly string[] Copied = { "package.json", "Runtime", "Editor", "Tests", "Samples~", "Tools~/UnitySurface" };
 
     /// <summary>Copies the package at <see cref="Paths.PackageRoot"/>.</summary>
     public PackageCopy()

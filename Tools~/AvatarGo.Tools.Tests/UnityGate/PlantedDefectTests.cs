@@ -50,6 +50,16 @@ public class PlantedDefectTests
     }
 
     [Test]
+    public void ASampleUsingAMemberTheSurfaceLacksFails()
+    {
+        // Samples~/NAME is compiled as Unity compiles it once imported into Assets: against the package and the surface.
+        const string demo = "Samples~/HeadsetFree/Scripts/HeadsetFreeDemo.cs";
+        _copy.Replace(demo, "GUILayout.EndArea();\n        }\n\n        private void Fail", "GUILayout.EndAreaNow();\n        }\n\n        private void Fail");
+        GateResult result = Gate(new[] { "editor-2021.3" }, "AvatarGo.Samples.HeadsetFree");
+        AssertSingleError(result, "CS0117", demo, "'GUILayout' does not contain a definition for 'EndAreaNow'");
+    }
+
+    [Test]
     public void CallToAMemberUnityLacksFails()
     {
         _copy.Write("Runtime/Bridge/PlantedGlobalPose.cs",
