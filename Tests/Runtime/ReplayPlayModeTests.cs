@@ -37,7 +37,9 @@ namespace AvatarGo.Tests.Runtime
             var run = new Run();
             yield return Play(Session(), run);
             Assert.That(run.Calibrator.Pipeline.State, Is.EqualTo(CalibrationState.Calibrated), run.Calibrator.Pipeline.LastCalibrationStep.Message);
-            Assert.That(run.Calibrator.Pipeline.Hand(BodySide.Left).HasFingerIk, Is.False, "the clip has no finger bones (if it gains them, the finger bound applies)");
+            SelfAvatarPipeline pipeline = run.Calibrator.Pipeline;
+            Assert.That(pipeline.Hand(BodySide.Left).HasFingerIk && pipeline.Hand(BodySide.Right).HasFingerIk, Is.True, "both hands get finger IK");
+            Assert.That(run.Check.HoldingFrames, Is.GreaterThan(100), "frames on which the fingers held the controller");
             Assert.That(run.Check.Failures(100), Is.Empty, run.Check.ToString());
         }
 
@@ -61,6 +63,7 @@ namespace AvatarGo.Tests.Runtime
         {
             var run = new Run();
             yield return Play(ReplayScenario.WithATrackerLost(Session()), run);
+            Assert.That(run.Check.FramesWithADeviceLost, Is.GreaterThan(100), "measured frames with the tracker lost (1.5 s at 90 Hz)");
             Assert.That(run.Calibrator.Pipeline.State, Is.EqualTo(CalibrationState.Calibrated), "a lost tracker does not undo the calibration");
             Assert.That(run.Check.Failures(100, accuracy: false), Is.Empty, run.Check.ToString());
         }

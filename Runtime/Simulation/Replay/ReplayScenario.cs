@@ -14,8 +14,11 @@ namespace AvatarGo.Simulation
     /// </summary>
     public static class ReplayScenario
     {
-        /// <summary>The clip, under the package's <c>Tests/Core/Data~</c>.</summary>
-        public const string Clip = "mocapbank_30fps.bvh";
+        /// <summary>
+        /// The clip, under the package's <c>Tests/Core/Data~</c>: the Mixamo-rigged one, whose hands have finger bones, so
+        /// the fingers' bound is exercised (the prefab's Quest Touch profile in both hands).
+        /// </summary>
+        public const string Clip = "mixamo_fingers_30fps.bvh";
 
         /// <summary>The simulation's seed.</summary>
         public const int Seed = 1;
@@ -23,11 +26,11 @@ namespace AvatarGo.Simulation
         /// <summary>How far the malformed T-pose holds one controller below the other (m).</summary>
         public const float LoweredArm = 0.4f;
 
-        /// <summary>When the lost tracker goes (s after the first frame).</summary>
-        public const double LossStart = 12.0;
+        /// <summary>How long before the session's last frame the lost tracker comes back (s): the loss lies in the motion.</summary>
+        public const double LossEndBeforeLastFrame = 0.5;
 
         /// <summary>How long the lost tracker stays lost (s).</summary>
-        public const double LossDuration = 2.0;
+        public const double LossDuration = 1.5;
 
         /// <summary>The clip's path under the package root.</summary>
         public static string ClipPath(string packageRoot) => Path.Combine(packageRoot, "Tests", "Core", "Data~", Clip);
@@ -52,18 +55,29 @@ namespace AvatarGo.Simulation
                 frame.Samples[c] = new DeviceSample(new RigidPose(p.Position - new Vector3(0f, LoweredArm, 0f), p.Rotation), s.IsTracked);
             });
 
-        /// <summary>The session with its first tracker reported lost from <see cref="LossStart"/> for <see cref="LossDuration"/> seconds.</summary>
+        /// <summary>
+        /// The session with its first tracker reported lost for <see cref="LossDuration"/> seconds, ending
+        /// <see cref="LossEndBeforeLastFrame"/> before the last frame (so it falls in the motion, after calibration).
+        /// </summary>
         public static string WithATrackerLost(string session)
         {
-            double start = double.NaN;
+            double last = LastFrameTime(session);
+            double end = last - LossEndBeforeLastFrame, start = end - LossDuration;
             return Edit(session, (header, frame) =>
             {
-                if (double.IsNaN(start)) start = frame.Time;
-                double t = frame.Time - start;
-                if (t < LossStart || t >= LossStart + LossDuration) return;
+                if (frame.Time < start || frame.Time >= end) return;
                 int d = FirstOf(header, DeviceClass.Tracker);
                 frame.Samples[d] = new DeviceSample(frame.Samples[d].Pose, false);
             });
+        }
+
+        private static double LastFrameTime(string session)
+        {
+            using var reader = new SessionReader(new StringReader(session), "replay scenario");
+            SessionFrame frame = reader.CreateFrame();
+            double last = double.NaN;
+            while (reader.ReadFrame(frame)) last = frame.Time;
+            return last;
         }
 
         /// <summary>

@@ -64,8 +64,9 @@ namespace AvatarGo.Core.Tests
             var (pipeline, _, check, _) = Play(Session);
             Assert.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), pipeline.LastCalibrationStep.Message);
             TestContext.WriteLine(check.ToString());
-            // The bundled mocapbank clip has no finger bones: no hand gets finger IK, so the finger bound holds vacuously here.
-            Assert.That(pipeline.Hand(BodySide.Left).HasFingerIk, Is.False, "the clip has no finger bones (if it gains them, the finger bound applies)");
+            // The Mixamo clip's hands have finger bones: both hold the Quest Touch profile, and the fingers' bound applies.
+            Assert.That(pipeline.Hand(BodySide.Left).HasFingerIk && pipeline.Hand(BodySide.Right).HasFingerIk, Is.True, "both hands get finger IK");
+            Assert.That(check.HoldingFrames, Is.GreaterThan(100), "frames on which the fingers held the controller");
             Assert.That(check.Failures(100), Is.Empty, check.ToString());
         }
 
@@ -87,6 +88,7 @@ namespace AvatarGo.Core.Tests
         public void LostTrackerDegradesWithoutExceptions()
         {
             var (pipeline, _, check, _) = Play(ReplayScenario.WithATrackerLost(Session));
+            Assert.That(check.FramesWithADeviceLost, Is.GreaterThan(100), "measured frames with the tracker lost (1.5 s at 90 Hz)");
             Assert.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), "a lost tracker does not undo the calibration");
             TestContext.WriteLine(check.ToString());
             Assert.That(check.Failures(100, accuracy: false), Is.Empty, check.ToString());
