@@ -48,6 +48,9 @@ namespace AvatarGo
         /// <summary>The transform of joint <paramref name="joint"/>.</summary>
         public Transform Joint(int joint) => _joints[joint];
 
+        /// <summary>The local pose (engine units) joint <paramref name="joint"/>'s transform had when bound.</summary>
+        public RigidPose BindLocalPose(int joint) => _bindLocal[joint];
+
         /// <summary>The transform of <paramref name="bone"/>, or null when the rig lacks it.</summary>
         public Transform this[HumanoidBone bone]
         {

@@ -3,6 +3,7 @@ using System.IO;
 using AvatarGo.Core;
 using UnityEngine;
 using UnityEngine.Events;
+using CoreScaleMode = AvatarGo.Core.ScaleMode; // UnityEngine has a ScaleMode of its own
 
 namespace AvatarGo
 {
@@ -14,7 +15,9 @@ namespace AvatarGo
     /// it during the walk-in, and hides the avatar until then. It saves each calibration to
     /// <c>Application.persistentDataPath</c> (atomically) and restores it on start when the same devices are worn.
     /// The avatar's bones are written by a driver: <see cref="AvatarGoAnimatorIKDriver"/> (added when missing, the default)
-    /// or <see cref="AvatarGoTransformDriver"/>.
+    /// or <see cref="AvatarGoTransformDriver"/>. With fitted proportions (<see cref="AvatarScaleMode"/>) this component moves
+    /// the avatar's knee, ankle, elbow and wrist transforms along their bones (<see cref="ProportionedBones"/>) from the
+    /// T-pose step on, and puts them back at their bind positions on reset and when disabled.
     /// </summary>
     /// <remarks>
     /// Frame order: this component's <c>Update</c> (source read, pipeline) → the IK driver's <c>Update</c> (the avatar's
@@ -56,6 +59,10 @@ namespace AvatarGo
 
         [SerializeField, Tooltip("Exact offsets (the paper's method) or the fixed-offset baseline.")]
         private OffsetMode m_Offsets = OffsetMode.Exact;
+
+        [SerializeField, Tooltip("Uniform: the avatar scaled by the wearer's eye height (the paper). Fitted: its legs and arms also fitted to the wearer's measured proportions, " +
+            "applied at run time by moving its knee, ankle, elbow and wrist bones along their bones (skinned meshes stretch around those joints; see calibration.md). Read when the pipeline is made.")]
+        private CoreScaleMode m_ScaleMode = CoreScaleMode.Uniform;
 
         [SerializeField, Tooltip("On start, reuse the calibration saved for this avatar when the same devices (by serial) are connected.")]
         private bool m_RestoreSavedProfile = true;
@@ -111,6 +118,7 @@ namespace AvatarGo
         private bool _failed, _resetByUser, _hasFrame;
         private MirrorPlane _mirror;
         private bool _hasMirror;
+        private ProportionedBones _bones;
 
         /// <summary>Where the devices come from.</summary>
         public AvatarGoTrackingSource Source { get => m_Source; set => m_Source = value; }
@@ -123,6 +131,16 @@ namespace AvatarGo
 
         /// <summary>Exact or fixed offsets; read when the pipeline is made and at each calibration.</summary>
         public OffsetMode Offsets { get => m_Offsets; set => m_Offsets = value; }
+
+        /// <summary>
+        /// Uniform (the paper's eye-height scaling) or fitted proportions (legs and arms fitted to the wearer, applied to the
+        /// avatar's knee, ankle, elbow and wrist bones); read when the pipeline is made. A restored calibration keeps the
+        /// proportions it was measured with.
+        /// </summary>
+        public CoreScaleMode AvatarScaleMode { get => m_ScaleMode; set => m_ScaleMode = value; }
+
+        /// <summary>Which bone transforms take the calibration's proportions, and where they are (null before <c>Start</c> binds the avatar).</summary>
+        public ProportionedBones Bones => _bones;
 
         /// <summary>Whether the saved calibration is restored on start (read in <c>Start</c>); samples and tests that must calibrate turn it off.</summary>
         public bool RestoresSavedProfileOnStart { get => m_RestoreSavedProfile; set => m_RestoreSavedProfile = value; }
@@ -184,6 +202,7 @@ namespace AvatarGo
             _resetByUser = true;
             if (_pipeline == null) return;
             _pipeline.Reset();
+            ApplyProportions();
             _flow.Reset(_hasFrame ? _frame.Time : 0.0, _pipeline.LastCalibrationStep.Message);
             Debug.Log($"{nameof(AvatarGoCalibrator)}: calibration reset. {_pipeline.LastCalibrationStep.Message}", this);
             Raise(m_OnCalibrationReset);
@@ -259,6 +278,30 @@ namespace AvatarGo
         {
             Application.onBeforeRender -= UpdateMirror;
             _display?.HideAll();
+            if (_bones != null && _bones.Restore()) CopyBones(); // the bind positions back
+        }
+
+        // The bones the calibration's proportions move, to where the core says (bind positions while there is no profile).
+        private void ApplyProportions()
+        {
+            if (_bones != null && _bones.Update(_pipeline != null ? _pipeline.Profile : null, enabled)) CopyBones();
+        }
+
+        private void CopyBones()
+        {
+            if (Binding == null) return;
+            for (int i = 0; i < _bones.Count; i++)
+            {
+                Transform t = Binding.Joint(_bones.Joint(i));
+                if (t != null) t.localPosition = _bones.LocalPosition(i).ToUnity();
+            }
+        }
+
+        // After the Animator: the fitted positions again, in case it wrote the bones' bind positions back while animating.
+        private void LateUpdate()
+        {
+            if (_failed || _bones == null || _bones.Applied.IsUniform) return;
+            CopyBones();
         }
 
         private void Start()
@@ -277,6 +320,9 @@ namespace AvatarGo
                 return;
             }
             Binding = binding;
+            var bind = new System.Numerics.Vector3[binding.Hierarchy.JointCount];
+            for (int j = 0; j < bind.Length; j++) bind[j] = binding.BindLocalPose(j).Position;
+            _bones = new ProportionedBones(binding.Map, bind);
             _display = new CalibrationDisplay(this, binding);
             AddDriver();
         }
@@ -307,6 +353,7 @@ namespace AvatarGo
                 return;
             }
             _hasFrame = true;
+            ApplyProportions();
             Announce(_flow.Update(_frame.Time, step, _pipeline.State), step);
             ShowFrame();
             Action<SessionFrame> read = FrameRead;
@@ -325,6 +372,7 @@ namespace AvatarGo
         {
             SelfAvatarPipeline old = _pipeline;
             var settings = new PipelineSettings { Offsets = m_Offsets };
+            settings.Calibration.Proportions.Mode = m_ScaleMode;
             if (_fingers != null) _fingers.ConfigureHands(settings);
             try
             {

@@ -64,18 +64,33 @@ namespace AvatarGo.Core
             if (!IsValid) throw new ArgumentException($"Proportions must be positive and finite: {this}.");
             if (!(overallScale > 0f) || !Vectors.IsFinite(overallScale)) throw new ArgumentOutOfRangeException(nameof(overallScale), overallScale, "The scale must be positive and finite.");
             var factors = new float[map.Skeleton.JointCount];
+            LocalPositionFactors(map, overallScale, factors);
+            return factors;
+        }
+
+        /// <summary>
+        /// <see cref="LocalPositionFactors(HumanoidMap, float)"/> into <paramref name="factors"/> (one per joint of the map's
+        /// skeleton), allocating nothing.
+        /// </summary>
+        /// <exception cref="ArgumentException">The proportions are not valid, the scale is not positive, or the span's length is not the joint count.</exception>
+        public void LocalPositionFactors(HumanoidMap map, float overallScale, Span<float> factors)
+        {
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            if (!IsValid) throw new ArgumentException($"Proportions must be positive and finite: {this}.");
+            if (!(overallScale > 0f) || !Vectors.IsFinite(overallScale)) throw new ArgumentOutOfRangeException(nameof(overallScale), overallScale, "The scale must be positive and finite.");
+            if (factors.Length != map.Skeleton.JointCount) throw new ArgumentException($"Expected {map.Skeleton.JointCount} factors, got {factors.Length}.", nameof(factors));
             for (int j = 0; j < factors.Length; j++) factors[j] = overallScale;
-            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+            for (int s = 0; s < 2; s++)
             {
+                var side = (BodySide)s;
                 Set(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, side), overallScale * Leg(side));
                 Set(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftFoot, side), overallScale * Leg(side));
                 Set(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side), overallScale * Arm(side));
                 Set(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftHand, side), overallScale * Arm(side));
             }
-            return factors;
         }
 
-        private static void Set(HumanoidMap map, float[] factors, HumanoidBone bone, float factor)
+        private static void Set(HumanoidMap map, Span<float> factors, HumanoidBone bone, float factor)
         {
             int j = map[bone];
             if (j >= 0) factors[j] = factor;
@@ -83,7 +98,7 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// The avatar with these proportions and the overall scale: a new skeleton (same names, hierarchy and rest
-        /// rotations) whose rest local positions are multiplied by <see cref="LocalPositionFactors"/>, with the same map.
+        /// rotations) whose rest local positions are multiplied by <see cref="LocalPositionFactors(HumanoidMap, float)"/>, with the same map.
         /// </summary>
         public HumanoidMap Apply(HumanoidMap map, float overallScale)
         {

@@ -95,7 +95,11 @@ namespace AvatarGo.Core
             else leftArm = rightArm = Math.Abs(0.5f * (dLeft + dRight)) > armBand;
             why.Append(FormattableString.Invariant($"; arms {(leftArm || rightArm ? "refitted" : "kept")}: reach {dLeft * 100:+0.0;-0.0} / {dRight * 100:+0.0;-0.0} cm from the uniform avatar's (uncertainty {armBand * 100:0.0} cm)"));
 
-            BodyProportions chosen = Solve(avatar, features, BodyProportions.Uniform, s0, legs, leftArm || rightArm, settings.PerSide, out float s, out _);
+            // Started from the measured proportions (the same groups, averaged over the sides unless per side): a step or two.
+            float startArm = settings.PerSide ? 1f : 0.5f * (measured.LeftArm + measured.RightArm);
+            var start = new BodyProportions(legs ? measured.LeftLeg : 1f, legs ? measured.RightLeg : 1f,
+                leftArm || rightArm ? (settings.PerSide ? measured.LeftArm : startArm) : 1f, leftArm || rightArm ? (settings.PerSide ? measured.RightArm : startArm) : 1f);
+            BodyProportions chosen = Solve(avatar, features, start, sm, legs, leftArm || rightArm, settings.PerSide, out float s, out _);
             chosen = new BodyProportions(chosen.LeftLeg, chosen.RightLeg, leftArm ? chosen.LeftArm : 1f, rightArm ? chosen.RightArm : 1f);
             var limited = new BodyProportions(Limit(chosen.LeftLeg, settings), Limit(chosen.RightLeg, settings), Limit(chosen.LeftArm, settings), Limit(chosen.RightArm, settings));
             if (!limited.Equals(chosen)) why.Append(FormattableString.Invariant($"; held within {settings.MinRatio:0.00}-{settings.MaxRatio:0.00} of the overall scale ({chosen} measured)"));
@@ -128,8 +132,16 @@ namespace AvatarGo.Core
 
         private static float Limit(float ratio, ProportionSettings settings) => Math.Min(settings.MaxRatio, Math.Max(settings.MinRatio, ratio));
 
-        // Fixed-point iteration: each free ratio moved so its part of the feature matches, then the overall scale so the
-        // eyes match. Every feature is close to linear in its ratio, so a few rounds converge to well under a millimetre.
+        /// <summary>Largest feature residual (m) at which a solve stops: 5 µm, far below what any device resolves.</summary>
+        private const float Converged = 5e-6f;
+
+        // Newton steps on a linear model of the avatar's T-pose, each checked against the avatar itself (one T-pose per
+        // step). The model: scaling everything by k scales every feature; a leg ratio moves the hip joints, and with them
+        // everything above, by the legs' part of the hip-joint height; an arm ratio moves the grip by the arm's part of the
+        // reach. Solved exactly for the free groups and the overall scale together (the eyes, and the hips when the legs are
+        // free, fix k), so that a few steps land within micrometres where alternating ratio and scale steps took up to
+        // sixteen T-poses. The constant parts (eye offset of a rig without eye bones, the grip's handle radius) are what
+        // the model leaves out; the steps that follow take them in.
         private static BodyProportions Solve(HumanoidMap avatar, in BodyFeatures wearer, BodyProportions start, float scale, bool legs, bool arms, bool perSide,
             out float finalScale, out AvatarShape shape)
         {
@@ -138,26 +150,25 @@ namespace AvatarGo.Core
             shape = Shape(avatar, p, s);
             for (int it = 0; it < Iterations; it++)
             {
+                // The overall factor k: with the legs free, from the eyes-to-hips distance (which the legs do not change);
+                // otherwise from the eyes.
+                float legPart = shape.UpperLegHeight;
+                float k = Clamp(legs ? (wearer.Eye - wearer.Hips) / (shape.Features.Eye - shape.Features.Hips) : wearer.Eye / shape.Features.Eye);
                 float leg = p.LeftLeg, la = p.LeftArm, ra = p.RightArm;
-                if (legs)
-                {
-                    float legPart = shape.UpperLegHeight;
-                    float target = wearer.Hips - (shape.Features.Hips - legPart);
-                    leg = p.LeftLeg * Clamp(target / legPart);
-                }
+                if (legs) leg = p.LeftLeg * Clamp((wearer.Hips / k - (shape.Features.Hips - legPart)) / legPart);
                 if (arms)
                 {
-                    float l = p.LeftArm * Clamp((wearer.LeftReach - (shape.Features.LeftReach - shape.LeftArmReach)) / shape.LeftArmReach);
-                    float r = p.RightArm * Clamp((wearer.RightReach - (shape.Features.RightReach - shape.RightArmReach)) / shape.RightArmReach);
+                    float l = p.LeftArm * Clamp((wearer.LeftReach / k - (shape.Features.LeftReach - shape.LeftArmReach)) / shape.LeftArmReach);
+                    float r = p.RightArm * Clamp((wearer.RightReach / k - (shape.Features.RightReach - shape.RightArmReach)) / shape.RightArmReach);
                     if (perSide) { la = l; ra = r; }
                     else la = ra = 0.5f * (l + r);
                 }
-                bool settled = Math.Abs(leg - p.LeftLeg) < 1e-5f && Math.Abs(la - p.LeftArm) < 1e-5f && Math.Abs(ra - p.RightArm) < 1e-5f;
+                // How far this step would move the features, in metres: nothing worth a T-pose, so converged.
+                float move = Math.Max(Math.Abs(k - 1f) * shape.Features.Eye, Math.Abs(leg / p.LeftLeg - 1f) * legPart);
+                move = Math.Max(move, Math.Max(Math.Abs(la / p.LeftArm - 1f) * shape.LeftArmReach, Math.Abs(ra / p.RightArm - 1f) * shape.RightArmReach));
+                if (!(move > Converged)) break;
                 p = new BodyProportions(leg, leg, la, ra);
-                if (!settled) shape = Shape(avatar, p, s);
-                float eyeRatio = wearer.Eye / shape.Features.Eye;
-                if (settled && Math.Abs(eyeRatio - 1f) < 1e-6f) break; // converged: nothing moved this round
-                s *= eyeRatio;
+                s *= k;
                 shape = Shape(avatar, p, s);
             }
             finalScale = s;

@@ -82,7 +82,7 @@ namespace AvatarGo.Core
             for (int j = 0; j < s.JointCount; j++)
             {
                 if (s.IsEndSite(j)) continue;
-                if (Orient(map, pose, j, roles[j])) pose.UpdateWorld();
+                if (Orient(map, pose, j, roles[j])) UpdateSubtree(pose, j);
             }
 
             // Stand on the floor (the lowest point of the legs, or the ankle's anatomical height for feet without toes),
@@ -102,6 +102,18 @@ namespace AvatarGo.Core
             for (int j = 0; j < s.JointCount; j++)
                 if (s.GetParent(j) < 0) pose.Local[j] = placement * new RigidPose(pose.Local[j].Position + shift, pose.Local[j].Rotation);
             pose.UpdateWorld();
+        }
+
+        // Forward kinematics of joint j and its descendants only (every other joint's world pose is unchanged by j's local
+        // one): the same products as a full update, so the same numbers, at a fraction of the cost on rigs with fingers.
+        private static void UpdateSubtree(SkeletonPose pose, int j)
+        {
+            Skeleton s = pose.Skeleton;
+            RigidPose[] world = pose.World, local = pose.Local;
+            int parent = s.GetParent(j);
+            world[j] = (parent < 0 ? pose.Origin : world[parent]) * local[j];
+            for (int k = j + 1; k < world.Length; k++)
+                if (s.IsAncestorOrSelf(j, k)) world[k] = world[s.GetParent(k)] * local[k];
         }
 
         /// <summary>
