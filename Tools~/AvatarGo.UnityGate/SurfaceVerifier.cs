@@ -111,10 +111,13 @@ public static class SurfaceVerifier
         _ => n.Kind().ToString(),
     };
 
+    private static readonly string[] ComparedModifiers = { "public", "protected", "internal", "private", "static", "const", "readonly" };
+
     // Kind, static-ness, visibility, types by their last name segment, parameter modifiers, accessors, enum values.
     private static string Signature(SyntaxNode n)
     {
-        string Mods(SyntaxTokenList m) => string.Join(" ", m.Where(t => t.Text is "public" or "protected" or "internal" or "private" or "static" or "const" or "readonly").Select(t => t.Text));
+        // In one canonical order: Unity writes "static public" as often as "public static".
+        string Mods(SyntaxTokenList m) => string.Join(" ", m.Select(t => t.Text).Where(t => Array.IndexOf(ComparedModifiers, t) >= 0).OrderBy(t => Array.IndexOf(ComparedModifiers, t)));
         string Params(ParameterListSyntax p) => "(" + string.Join(", ", p.Parameters.Select(x => (x.Modifiers.ToString() + " " + Last(x.Type?.ToString())).Trim() + " " + x.Identifier.Text)) + ")";
         return n switch
         {

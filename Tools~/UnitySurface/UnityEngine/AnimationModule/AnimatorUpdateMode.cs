@@ -8,6 +8,7 @@ namespace UnityEngine
     {
         Normal = 0,
 #if UNITY_2023_1_OR_NEWER
+        // UnityCsReference@2023.1 Modules/Animation/ScriptBindings/Animator.bindings.cs
         Fixed = 1,
 #endif
         UnscaledTime = 2,

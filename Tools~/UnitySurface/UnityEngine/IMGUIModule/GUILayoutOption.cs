@@ -3,9 +3,15 @@
 namespace UnityEngine
 {
     // UnityCsReference@2021.3 Modules/IMGUI/GUILayoutOption.cs
-    // Made only by GUILayout's option functions (its constructor is internal).
+    // Made only by GUILayout's option functions: its constructor is internal, so package code cannot call it.
     public sealed class GUILayoutOption
     {
-        private GUILayoutOption() => throw null;
+        internal enum Type
+        {
+            fixedWidth, fixedHeight, minWidth, maxWidth, minHeight, maxHeight, stretchWidth, stretchHeight,
+            alignStart, alignMiddle, alignEnd, alignJustify, equalSize, spacing,
+        }
+
+        internal GUILayoutOption(Type type, object value) => throw null;
     }
 }
