@@ -77,7 +77,11 @@ namespace AvatarGo.Editor
             {
                 EditorGUILayout.HelpBox(finding.Message, TypeOf(finding.Severity));
                 string label = ButtonLabel(finding.Fix);
-                if (label != null && GUILayout.Button(label)) Apply(finding.Fix, calibrator);
+                if (label != null && GUILayout.Button(label))
+                {
+                    Apply(finding.Fix, calibrator);
+                    GUIUtility.ExitGUI(); // the scene changed: end this GUI event rather than lay out the rest against the old state
+                }
             }
         }
 

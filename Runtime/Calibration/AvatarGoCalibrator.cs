@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 using AvatarGo.Core;
 using UnityEngine;
@@ -142,7 +143,7 @@ namespace AvatarGo
         /// <summary>Which bone transforms take the calibration's proportions, and where they are (null before <c>Start</c> binds the avatar).</summary>
         public ProportionedBones Bones => _bones;
 
-        /// <summary>Whether the saved calibration is restored on start (read in <c>Start</c>); samples and tests that must calibrate turn it off.</summary>
+        /// <summary>Whether a saved calibration is restored when the pipeline is made for the source's devices (at start and whenever they change); samples and tests that must calibrate turn it off.</summary>
         public bool RestoresSavedProfileOnStart { get => m_RestoreSavedProfile; set => m_RestoreSavedProfile = value; }
 
         /// <summary>Whether each new calibration is saved to <see cref="ProfilePath"/>.</summary>
@@ -176,7 +177,14 @@ namespace AvatarGo
         public string ProfilePath => Path.Combine(AvatarGoFiles.Folder(Application.persistentDataPath), AvatarGoFiles.ProfileFileName(AvatarName));
 
         /// <summary>Raised every frame after the pipeline ran, with the frame it was fed (AvatarGoRecorder records it).</summary>
-        public event Action<SessionFrame> FrameRead;
+        public event Action<SessionFrame> FrameRead
+        {
+            add { if (value != null) _frameRead.Add(value); }
+            remove { _frameRead.Remove(value); }
+        }
+
+        // The listeners of FrameRead, kept as a list so that each is called on its own without allocating per frame.
+        private readonly List<Action<SessionFrame>> _frameRead = new List<Action<SessionFrame>>(2);
 
         /// <summary>The T-pose step succeeded.</summary>
         public UnityEvent OnTPoseAccepted => m_OnTPoseAccepted;
@@ -356,8 +364,18 @@ namespace AvatarGo
             ApplyProportions();
             Announce(_flow.Update(_frame.Time, step, _pipeline.State), step);
             ShowFrame();
-            Action<SessionFrame> read = FrameRead;
-            if (read != null) read(_frame);
+            // Each listener on its own: one that throws is logged and neither stops the others nor escapes Update.
+            for (int i = 0; i < _frameRead.Count; i++)
+            {
+                try
+                {
+                    _frameRead[i](_frame);
+                }
+                catch (Exception e)
+                {
+                    Debug.LogException(e, this);
+                }
+            }
         }
 
         private void OnDestroy()
@@ -466,6 +484,10 @@ namespace AvatarGo
                     AvatarGoAnimatorIKDriver ik = m_Animator.GetComponent<AvatarGoAnimatorIKDriver>();
                     if (ik == null) ik = m_Animator.gameObject.AddComponent<AvatarGoAnimatorIKDriver>();
                     if (ik.Calibrator == null) ik.Calibrator = this;
+                    // Unity's humanoid IK solves with the Avatar's own bone lengths; the fitted lengths are written to the
+                    // bones afterwards, which may pull the hands and feet off their goals (not confirmed in Unity yet).
+                    if (m_ScaleMode == CoreScaleMode.Fitted)
+                        Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: Scale Mode Fitted with the Animator IK driver: Unity's IK uses the Avatar's bind lengths, so the hands and feet may miss their goals by the fitted change. The Transforms driver applies the fitted solve exactly (calibrator.md).", this);
                     break;
                 case DriverKind.AnimatorIK:
                 case DriverKind.Transforms:

@@ -57,7 +57,10 @@ namespace AvatarGo
 
         private void OnDisable()
         {
-            if (_moved && m_Model != null) m_Model.SetParent(_originalParent, true);
+            // Unity refuses to re-parent while a parent is being activated or deactivated (the rig or scene going away):
+            // then the model stays where it is, under the tracking origin.
+            if (_moved && m_Model != null && m_Model.gameObject.activeInHierarchy && (_originalParent == null || _originalParent.gameObject.activeInHierarchy))
+                m_Model.SetParent(_originalParent, true);
             _moved = false;
             _hasOffset = false;
         }

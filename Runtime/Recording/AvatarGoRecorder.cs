@@ -59,7 +59,19 @@ namespace AvatarGo
         public string LastRecordingPath { get; private set; }
 
         /// <summary>The calibrator whose frames are recorded.</summary>
-        public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
+        public AvatarGoCalibrator Calibrator
+        {
+            get => m_Calibrator;
+            set
+            {
+                if (value == m_Calibrator) return;
+                m_Calibrator = value;
+                if (!isActiveAndEnabled) return; // OnEnable subscribes
+                if (_subscribed != null) _subscribed.FrameRead -= Record;
+                _subscribed = m_Calibrator;
+                if (_subscribed != null) _subscribed.FrameRead += Record;
+            }
+        }
 
         /// <summary>The source read when there is no calibrator.</summary>
         public AvatarGoTrackingSource Source { get => m_Source; set => m_Source = value; }
@@ -154,6 +166,9 @@ namespace AvatarGo
 
         private void Record(SessionFrame frame)
         {
+            // The calibrator raises its first frame before this component's Update has run: start here too, so that a
+            // recording switched on at start holds that frame.
+            if (m_Record && !IsRecording) StartRecording();
             if (!IsRecording) return;
             AvatarGoTrackingSource source = SourceRecorded();
             if (source == null || source.HeaderVersion != _recordingHeaderVersion || frame.Samples.Length != _recording.Header.Devices.Count)

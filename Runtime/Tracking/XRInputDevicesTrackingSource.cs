@@ -35,7 +35,8 @@ namespace AvatarGo
         {
             get
             {
-                if (!_listening) Listen();
+                // A disabled source stays disabled: reading it does not subscribe to InputDevices again.
+                if (!_listening && isActiveAndEnabled) Listen();
                 return _registry.Header;
             }
         }
@@ -73,7 +74,7 @@ namespace AvatarGo
         public override void Read(SessionFrame frame)
         {
             if (frame == null) return;
-            if (!_listening) Listen();
+            if (!_listening && isActiveAndEnabled) Listen();
             frame.Clear();
             frame.Time = Time.timeAsDouble;
             int count = System.Math.Min(frame.Samples.Length, _registry.Count);

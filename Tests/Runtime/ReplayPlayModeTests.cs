@@ -13,7 +13,8 @@ namespace AvatarGo.Tests.Runtime
     /// <summary>
     /// A recorded session played frame by frame through the package's components (a <see cref="RecordedSessionTrackingSource"/>
     /// in stepped mode, the <see cref="AvatarGoCalibrator"/>, the <see cref="AvatarGoFingers"/> and the driver the calibrator
-    /// adds) on an avatar made of GameObjects from the wearer's skeleton. Each test has an engine-free twin in
+    /// adds: the Transform driver, as this avatar has no humanoid Animator; the Animator IK path is not played here) on an
+    /// avatar made of GameObjects from the wearer's skeleton. Each test has an engine-free twin in
     /// <c>Tests/Core/Shell/ReplayTwinTests.cs</c> with the same name, session and assertions (<see cref="ReplayCheck"/>).
     /// Needs the bundled clip on disk (<c>Tests/Core/Data~</c>, in the package folder): run in the Editor's play mode.
     /// </summary>
@@ -63,7 +64,7 @@ namespace AvatarGo.Tests.Runtime
         {
             var run = new Run();
             yield return Play(ReplayScenario.WithATrackerLost(Session()), run);
-            Assert.That(run.Check.FramesWithADeviceLost, Is.GreaterThan(100), "measured frames with the tracker lost (1.5 s at 90 Hz)");
+            Assert.That(run.Check.FramesWithAnUntrackedDevice, Is.GreaterThan(100), "measured frames with the tracker lost (1.5 s at 90 Hz)");
             Assert.That(run.Calibrator.Pipeline.State, Is.EqualTo(CalibrationState.Calibrated), "a lost tracker does not undo the calibration");
             Assert.That(run.Check.Failures(100, accuracy: false), Is.Empty, run.Check.ToString());
         }
@@ -122,6 +123,10 @@ namespace AvatarGo.Tests.Runtime
             run.Calibrator.Source = source;
             run.Calibrator.AvatarRoot = made[0];
             run.Calibrator.Offsets = OffsetMode.Exact;
+            // Every test calibrates from its own session: a profile saved by an earlier test (same simulated serials, same
+            // avatar) must not be restored, and none is written to the user's data folder.
+            run.Calibrator.RestoresSavedProfileOnStart = false;
+            run.Calibrator.SavesProfile = false;
             var fingers = rig.AddComponent<AvatarGoFingers>();
             fingers.Calibrator = run.Calibrator;
             fingers.SetGrip(BodySide.Left, GripMode.Hold);
@@ -130,7 +135,7 @@ namespace AvatarGo.Tests.Runtime
             // One recorded frame per rendered frame. A [UnityTest] resumes after Update, before LateUpdate: the bones seen
             // now were written in the previous frame's LateUpdate, from the previous recorded frame, whose truth is kept.
             SessionFrame previous = null;
-            bool measuring = false;
+            bool measuring = false, calibratedEarlier = false;
             while (source.Step())
             {
                 yield return null;
@@ -141,12 +146,16 @@ namespace AvatarGo.Tests.Runtime
                     HumanoidBinding binding = run.Calibrator.Binding;
                     run.Check.Add(previous, bone => binding[bone] != null ? binding[bone].position.ToCore() : (System.Numerics.Vector3?)null, pipeline);
                 }
-                // The twin measures from the second calibrated frame on: so does this (the first calibrated frame's bones are
-                // written in this frame's LateUpdate and seen at the next resume).
-                measuring = pipeline.State == CalibrationState.Calibrated;
+                // The twin skips the first calibrated frame and measures from the second on. Its bones are seen one resume
+                // later (written in this frame's LateUpdate), so the flag set now is for the frame read now.
+                bool calibrated = pipeline.State == CalibrationState.Calibrated;
+                measuring = calibrated && calibratedEarlier;
+                calibratedEarlier |= calibrated;
                 if (previous == null) previous = new SessionFrame(source.Header);
-                Array.Copy(run.Calibrator.CurrentFrame.Truth, previous.Truth, previous.Truth.Length);
-                Array.Copy(run.Calibrator.CurrentFrame.HasTruth, previous.HasTruth, previous.HasTruth.Length);
+                SessionFrame current = run.Calibrator.CurrentFrame;
+                Array.Copy(current.Truth, previous.Truth, previous.Truth.Length);
+                Array.Copy(current.HasTruth, previous.HasTruth, previous.HasTruth.Length);
+                Array.Copy(current.Samples, previous.Samples, previous.Samples.Length); // the lost-frame count reads them
             }
         }
     }

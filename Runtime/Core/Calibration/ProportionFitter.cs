@@ -132,7 +132,7 @@ namespace AvatarGo.Core
 
         private static float Limit(float ratio, ProportionSettings settings) => Math.Min(settings.MaxRatio, Math.Max(settings.MinRatio, ratio));
 
-        /// <summary>Largest feature residual (m) at which a solve stops: 5 µm, far below what any device resolves.</summary>
+        /// <summary>The step (m, predicted by the linear model) below which a solve stops: 5 µm, far below what any device resolves.</summary>
         private const float Converged = 5e-6f;
 
         // Newton steps on a linear model of the avatar's T-pose, each checked against the avatar itself (one T-pose per

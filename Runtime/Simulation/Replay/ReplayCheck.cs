@@ -66,8 +66,8 @@ namespace AvatarGo.Simulation
         /// <summary>Frames on which a hand with finger IK held its controller.</summary>
         public int HoldingFrames { get; private set; }
 
-        /// <summary>Frames measured while some device was reported lost.</summary>
-        public int FramesWithADeviceLost { get; private set; }
+        /// <summary>Frames measured whose samples (as given to <see cref="Add"/>) report some device untracked.</summary>
+        public int FramesWithAnUntrackedDevice { get; private set; }
 
         /// <summary>
         /// Measures one calibrated frame: <paramref name="avatar"/> gives a bone's world position (tracking space = world in the
@@ -80,7 +80,7 @@ namespace AvatarGo.Simulation
             if (avatar == null) throw new ArgumentNullException(nameof(avatar));
             Frames++;
             for (int d = 0; d < frame.Samples.Length; d++)
-                if (!frame.Samples[d].IsTracked) { FramesWithADeviceLost++; break; }
+                if (!frame.Samples[d].IsTracked) { FramesWithAnUntrackedDevice++; break; }
             for (int e = 0; e < EndEffectors.Length; e++)
             {
                 HumanoidBone bone = EndEffectors[e];

@@ -88,7 +88,7 @@ namespace AvatarGo.Core.Tests
         public void LostTrackerDegradesWithoutExceptions()
         {
             var (pipeline, _, check, _) = Play(ReplayScenario.WithATrackerLost(Session));
-            Assert.That(check.FramesWithADeviceLost, Is.GreaterThan(100), "measured frames with the tracker lost (1.5 s at 90 Hz)");
+            Assert.That(check.FramesWithAnUntrackedDevice, Is.GreaterThan(100), "measured frames with the tracker lost (1.5 s at 90 Hz)");
             Assert.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), "a lost tracker does not undo the calibration");
             TestContext.WriteLine(check.ToString());
             Assert.That(check.Failures(100, accuracy: false), Is.Empty, check.ToString());

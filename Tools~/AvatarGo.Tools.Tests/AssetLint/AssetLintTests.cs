@@ -144,6 +144,22 @@ MonoBehaviour:
     }
 
     [Test]
+    public void EverySerializedFieldOfThePackagesComponentsIsOneUnitySerializes()
+    {
+        // A [SerializeField] the catalog cannot type (an alias it did not resolve, a type it does not know) would be left
+        // out of the generated prefab and refused in assets without anyone noticing.
+        var scripts = new PackageLint.PackageLinter(Paths.PackageRoot).Files.Where(f => f.EndsWith(".cs", StringComparison.Ordinal) && PackageLint.PackageLinter.IsImported(f));
+        var catalog = new ScriptCatalog(Paths.PackageRoot, scripts);
+        var problems = new List<string>();
+        foreach (ScriptType type in catalog.Types.Where(catalog.IsUnityScript))
+            foreach (ScriptField field in type.Fields)
+                if (!field.Serialized && field.WhyNot != null && !field.WhyNot.StartsWith("neither public", StringComparison.Ordinal)
+                    && field.WhyNot is not ("static" or "const" or "readonly" or "[NonSerialized]"))
+                    problems.Add($"{type.File}: {type.Name}.{field.Name}: {field.WhyNot}");
+        Assert.That(problems, Is.Empty, string.Join("\n", problems));
+    }
+
+    [Test]
     public void CleanFakePrefabHasNoProblems()
     {
         var linter = new AssetLinter(_root);

@@ -49,6 +49,7 @@ public sealed class ScriptCatalog
         "Avatar", "RuntimeAnimatorController", "AnimationClip", "Material", "Mesh", "Shader", "Texture", "Texture2D", "Sprite",
         "Renderer", "MeshRenderer", "SkinnedMeshRenderer", "LineRenderer", "Camera", "Light", "AudioClip", "TextAsset", "Font",
         "Collider", "Rigidbody", "InputActionAsset", "InputActionReference",
+        "XROrigin", // com.unity.xr.core-utils: a MonoBehaviour
     };
 
     /// <summary>
@@ -56,7 +57,11 @@ public sealed class ScriptCatalog
     /// <c>UnityEvent&lt;T0..T3&gt;</c> fields themselves (Unity manual, "Script serialization"); each is written as
     /// <c>m_PersistentCalls: {m_Calls: [...]}</c>.
     /// </summary>
-    public static readonly IReadOnlySet<string> UnitySerializableClasses = new HashSet<string>(StringComparer.Ordinal) { "UnityEvent" };
+    public static readonly IReadOnlySet<string> UnitySerializableClasses = new HashSet<string>(StringComparer.Ordinal)
+    {
+        "UnityEvent",
+        "InputActionProperty", // com.unity.inputsystem: a [Serializable] struct (m_UseReference, m_Action, m_Reference)
+    };
 
     private static readonly IReadOnlySet<string> Primitives = new HashSet<string>(StringComparer.Ordinal)
     {
@@ -189,12 +194,22 @@ public sealed class ScriptCatalog
         else if (f.Modifiers.Any(SyntaxKind.ReadOnlyKeyword)) why = "readonly";
         else if (HasAttribute(f.AttributeLists, "NonSerialized")) why = "[NonSerialized]";
         else if (!f.Modifiers.Any(SyntaxKind.PublicKeyword) && !serializeField && !serializeReference) why = "neither public nor [SerializeField]";
-        else if (!serializeReference) why = WhyNotSerializable(f.Declaration.Type);
+        TypeSyntax fieldType = ResolveAlias(f.Declaration.Type);
+        if (why == null && !serializeReference) why = WhyNotSerializable(fieldType);
         var former = f.AttributeLists.SelectMany(l => l.Attributes)
             .Where(a => AttributeName(a) == "FormerlySerializedAs" && a.ArgumentList?.Arguments.Count > 0)
             .Select(a => (a.ArgumentList.Arguments[0].Expression as LiteralExpressionSyntax)?.Token.ValueText)
             .Where(s => s != null).ToList();
-        return new ScriptField(v.Identifier.Text, former, f.Declaration.Type, f.Declaration.Type.ToString(), why == null, why);
+        return new ScriptField(v.Identifier.Text, former, fieldType, fieldType.ToString(), why == null, why);
+    }
+
+    // A field typed by a using alias of its file (`using CoreScaleMode = AvatarGo.Core.ScaleMode;`) has the alias's target type.
+    private static TypeSyntax ResolveAlias(TypeSyntax type)
+    {
+        if (type is not IdentifierNameSyntax name || type.SyntaxTree == null) return type;
+        foreach (UsingDirectiveSyntax u in type.SyntaxTree.GetCompilationUnitRoot().DescendantNodes().OfType<UsingDirectiveSyntax>())
+            if (u.Alias != null && u.Alias.Name.Identifier.Text == name.Identifier.Text && u.Name != null) return u.Name;
+        return type;
     }
 
     private static bool HasAttribute(SyntaxList<AttributeListSyntax> lists, string name) =>

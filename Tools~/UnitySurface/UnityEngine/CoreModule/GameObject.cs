@@ -18,6 +18,8 @@ namespace UnityEngine
 
         public void SetActive(bool value) => throw null;
 
+        public bool activeInHierarchy => throw null;
+
         public GameObject(string name) => throw null;
     }
 }
