@@ -29,7 +29,7 @@ namespace AvatarGo.Simulation
             _clip = clip ?? throw new ArgumentNullException(nameof(clip));
             if (clip.FrameCount == 0) throw new ArgumentException("The clip has no frames (Frames: 0): there is no motion to simulate.", nameof(clip));
             _options = options ?? new SimulationOptions();
-            double frames = (_options.TPoseSeconds + _options.WalkInSeconds + _options.BlendSeconds + clip.FrameCount * (double)clip.FrameTime) * _options.Rate;
+            double frames = (_options.TPoseSeconds + _options.WalkInSeconds + _options.ExerciseSeconds + _options.BlendSeconds + clip.FrameCount * (double)clip.FrameTime) * _options.Rate;
             if (!(frames < int.MaxValue)) throw new ArgumentException($"The clip is too long to simulate at {_options.Rate} Hz ({(long)Math.Min(frames, long.MaxValue)} frames).", nameof(clip));
             _map = map ?? HumanoidNaming.Detect(clip.Skeleton);
             _map.RequireComplete(nameof(clip));
@@ -52,7 +52,7 @@ namespace AvatarGo.Simulation
         public SessionHeader CreateHeader() => new SessionHeader(_options.Rate, Devices(), DeviceRoles, _map);
 
         /// <summary>The number of frames <see cref="Run"/> writes.</summary>
-        public int FrameCount => (int)Math.Round((_options.TPoseSeconds + _options.WalkInSeconds + _options.BlendSeconds + _clip.FrameCount * _clip.FrameTime) * _options.Rate);
+        public int FrameCount => (int)Math.Round((_options.TPoseSeconds + _options.WalkInSeconds + _options.ExerciseSeconds + _options.BlendSeconds + _clip.FrameCount * _clip.FrameTime) * _options.Rate);
 
         /// <summary>Writes the whole session. <paramref name="progress"/> (optional) gets the fraction done.</summary>
         public void Run(SessionWriter writer, Action<float> progress = null)
@@ -92,6 +92,7 @@ namespace AvatarGo.Simulation
             int total = FrameCount;
             int tposeFrames = (int)Math.Round(_options.TPoseSeconds * _options.Rate);
             int walkFrames = (int)Math.Round(_options.WalkInSeconds * _options.Rate);
+            int exerciseFrames = (int)Math.Round(_options.ExerciseSeconds * _options.Rate);
             int blendFrames = Math.Max(1, (int)Math.Round(_options.BlendSeconds * _options.Rate));
             RigidPose[] tposeTarget = null;
             RigidPose target = start;
@@ -125,15 +126,20 @@ namespace AvatarGo.Simulation
                     if (i == tposeFrames + walkFrames - 1) frame.Events.Add(new DeviceEvent(2, DeviceEventKind.TriggerPressed));
                     if (i == tposeFrames) frame.Events.Add(new DeviceEvent(1, DeviceEventKind.TriggerReleased));
                 }
-                else if (i < tposeFrames + walkFrames + blendFrames)
+                else if (i < tposeFrames + walkFrames + exerciseFrames)
                 {
-                    float b = Smooth((i - tposeFrames - walkFrames) / (float)blendFrames);
-                    Blend(tposeTarget, clipLocal[0], b, pose.Local);
+                    RefinementExercise.Pose(_map, tposeTarget, (i - tposeFrames - walkFrames) / (float)Math.Max(1, exerciseFrames - 1), pose);
                     if (i == tposeFrames + walkFrames) frame.Events.Add(new DeviceEvent(2, DeviceEventKind.TriggerReleased));
+                }
+                else if (i < tposeFrames + walkFrames + exerciseFrames + blendFrames)
+                {
+                    float b = Smooth((i - tposeFrames - walkFrames - exerciseFrames) / (float)blendFrames);
+                    Blend(tposeTarget, clipLocal[0], b, pose.Local);
+                    if (exerciseFrames == 0 && i == tposeFrames + walkFrames) frame.Events.Add(new DeviceEvent(2, DeviceEventKind.TriggerReleased));
                 }
                 else
                 {
-                    double clipTime = (i - tposeFrames - walkFrames - blendFrames) * (double)dt;
+                    double clipTime = (i - tposeFrames - walkFrames - exerciseFrames - blendFrames) * (double)dt;
                     double f = Math.Min(clipTime / _clip.FrameTime, _clip.FrameCount - 1);
                     int f0 = (int)Math.Floor(f);
                     int f1 = Math.Min(f0 + 1, _clip.FrameCount - 1);

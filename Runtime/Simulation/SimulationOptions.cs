@@ -42,6 +42,12 @@ namespace AvatarGo.Simulation
         /// <summary>Seconds walking into the avatar and holding still before the second press (2.5).</summary>
         public float WalkInSeconds { get; set; } = 2.5f;
 
+        /// <summary>
+        /// Seconds of the refinement exercise (<see cref="RefinementExercise"/>: arm circles, reaches, squats) performed in
+        /// the T-pose right after the walk-in press, before the blend into the clip (0: none).
+        /// </summary>
+        public float ExerciseSeconds { get; set; }
+
         /// <summary>Seconds blending from the T-pose into the clip's first frame (1).</summary>
         public float BlendSeconds { get; set; } = 1f;
     }

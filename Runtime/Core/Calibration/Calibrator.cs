@@ -272,6 +272,19 @@ namespace AvatarGo.Core
             return "refitted to the T-pose and the walk-in: " + fit.Explanation;
         }
 
+        /// <summary>
+        /// After calibration: the avatar rebuilt with <paramref name="proportions"/> (same overall scale and placement) and
+        /// the exact offsets computed again on it from the devices' walk-in poses, as step 2 did (the refinement from motion,
+        /// <see cref="ProportionRefinement"/>). Allocates.
+        /// </summary>
+        internal void Refit(BodyProportions proportions)
+        {
+            ShowAvatar(Profile.AvatarScale, Profile.Placement, proportions);
+            Profile.Proportions = proportions;
+            foreach (DeviceRole role in BodyRoles.All)
+                Profile.SetOffsets(role, Profile.DeviceAtCalibration(role), AvatarPose.World[ScaledAvatar[BodyRoles.JointOf(role)]]);
+        }
+
         // A refused walk-in step keeps the roles: the wearer only has to hold still and press again.
         private CalibrationStep Keep(CalibrationError error, string detail) =>
             new CalibrationStep(State, CalibrationStepOutcome.Refused, error, CalibrationMessages.For(error) + " (" + detail + ")", null);

@@ -49,6 +49,7 @@ namespace AvatarGo.Core
         private SkeletonPose _pose, _lastGood;
         private BodyTargets _targets;
         private IkReport _report;
+        private ProportionRefinement _refinement;         // while the refinement exercise is recorded
 
         /// <summary>Creates the pipeline for these devices (in the order every frame's samples come) and this avatar.</summary>
         /// <exception cref="ArgumentException">The avatar lacks a required humanoid bone, or two devices share an id.</exception>
@@ -168,6 +169,7 @@ namespace AvatarGo.Core
             _ik = null;
             _pose = _lastGood = null;
             ActiveProfile = _measured = null;
+            _refinement = null;
             LastSwap = RoleSwap.None;
             LastSwapTime = double.NaN;
             _targets = default;
@@ -224,6 +226,40 @@ namespace AvatarGo.Core
             _measured = _measured.WithRemeasuredDevice(role, device.Mean, referenceNow * joint0.RelativeTo(reference0));
             Bind(true);
             return true;
+        }
+
+        /// <summary>
+        /// Starts the refinement exercise (<see cref="ProportionRefinement"/>): from the next frame on, every solved frame is
+        /// recorded (allocation-free) until <see cref="EndRefinement"/>. False before calibration. Allocates the recorder
+        /// (<paramref name="capacity"/> frames, 20 s at 90 Hz by default).
+        /// </summary>
+        public bool BeginRefinement(int capacity = 1800)
+        {
+            if (_mapper == null) return false;
+            _refinement = new ProportionRefinement(_calibrator.ScaledAvatar, _calibrator.Profile.Proportions, Settings.Calibration.Proportions, capacity);
+            _refinement.Begin();
+            return true;
+        }
+
+        /// <summary>True between <see cref="BeginRefinement"/> and <see cref="EndRefinement"/>.</summary>
+        public bool IsRefining => _refinement != null && _refinement.IsRecording;
+
+        /// <summary>
+        /// Ends the refinement exercise and applies it: the arms' lengths refined from their reach, the avatar rebuilt with
+        /// them and the exact offsets computed again on it from the walk-in (<see cref="ScaledAvatar"/>, <see cref="Pose"/>,
+        /// <see cref="Profile"/> and the solver are new objects when anything changed; later swaps and re-measured devices
+        /// are undone, as by a new calibration). Returns the report with each limb's residual before and after, or null when
+        /// no exercise was started. Allocates.
+        /// </summary>
+        public RefinementReport EndRefinement()
+        {
+            if (_refinement == null) return null;
+            RefinementReport report = _refinement.Solve();
+            _refinement = null;
+            if (_mapper == null || !report.Changed) return report;
+            _calibrator.Refit(report.After);
+            Setup();
+            return report;
         }
 
         /// <summary>
@@ -349,6 +385,7 @@ namespace AvatarGo.Core
             _pose.UpdateWorld();
             if (IsFinite(_pose)) _lastGood.CopyFrom(_pose);
             else _pose.CopyFrom(_lastGood); // never a NaN on a bone: keep the last good frame
+            _refinement?.Add(in _targets, _pose);
             CheckForSwaps(time, dt);
         }
 

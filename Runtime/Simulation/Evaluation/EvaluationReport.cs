@@ -66,6 +66,15 @@ namespace AvatarGo.Simulation
         /// <summary>The calibrated avatar's measurements (the fitted or uniformly scaled avatar), or null before calibration.</summary>
         public BodyMeasurements AvatarMeasurements { get; internal set; }
 
+        /// <summary>
+        /// The refinement from motion (<see cref="SessionEvaluator.EvaluateExercise"/> with refinement on), or null; then
+        /// <see cref="AvatarMeasurements"/> are the refined avatar's.
+        /// </summary>
+        public RefinementReport Refinement { get; internal set; }
+
+        /// <summary>Frames of the refinement exercise after calibration, not scored (0 without an exercise).</summary>
+        public int ExerciseFrames { get; internal set; }
+
         /// <summary>How many times the pipeline found devices swapped (none should be, in a session without swaps).</summary>
         public int RoleSwaps { get; internal set; }
 

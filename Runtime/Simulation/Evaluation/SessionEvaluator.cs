@@ -47,9 +47,20 @@ namespace AvatarGo.Simulation
         public static EvaluationReport EvaluateWithTruth(SessionReader reader, PipelineSettings settings, HumanoidMap avatar,
             Action<SelfAvatarPipeline, SessionFrame> onFrame, DisturbanceOptions disturbance = null) => Run(reader, settings, avatar, onFrame, disturbance);
 
+        /// <summary>
+        /// Evaluates a session with the refinement exercise (<see cref="SimulationOptions.ExerciseSeconds"/>): the
+        /// <paramref name="exerciseSeconds"/> after calibration are not scored; with <paramref name="refine"/> they are fed to
+        /// the pipeline's refinement (<see cref="SelfAvatarPipeline.BeginRefinement"/>, <see cref="SelfAvatarPipeline.EndRefinement"/>
+        /// at their end, <see cref="EvaluationReport.Refinement"/>), without it the calibrated avatar stays. Either way the
+        /// same frames are scored, so the two compare.
+        /// </summary>
+        public static EvaluationReport EvaluateExercise(SessionReader reader, PipelineSettings settings, HumanoidMap avatar, float exerciseSeconds, bool refine) =>
+            Run(reader, settings, avatar, null, null, exerciseSeconds, refine);
+
         private static EvaluationReport Run(SessionReader reader, PipelineSettings settings, HumanoidMap avatar, Action<SelfAvatarPipeline, SessionFrame> onFrame,
-            DisturbanceOptions disturbance)
+            DisturbanceOptions disturbance, float exerciseSeconds = 0f, bool refine = false)
         {
+            double exerciseEnd = double.NaN;
             if (reader == null) throw new ArgumentNullException(nameof(reader));
             if (settings == null) throw new ArgumentNullException(nameof(settings));
             SessionHeader header = reader.Header;
@@ -85,12 +96,30 @@ namespace AvatarGo.Simulation
                         if (scaled.Has((HumanoidBone)b)) avatarAtCalibration[b] = pipeline.Pose.World[scaled[(HumanoidBone)b]];
                     }
                     if (pipeline.Hand(BodySide.Left).HasFingerIk || pipeline.Hand(BodySide.Right).HasFingerIk) report.Fingers = new FingerReport();
+                    if (exerciseSeconds > 0f)
+                    {
+                        exerciseEnd = frame.Time + exerciseSeconds;
+                        if (refine) pipeline.BeginRefinement();
+                    }
                     if (disturbance != null && disturbance.IsActive)
                     {
                         report.Disturbance = new DisturbanceReport();
                         disturbed = new DisturbanceTracker(header, disturbance, pipeline, report.Disturbance);
                     }
                     continue;
+                }
+                if (frame.Time < exerciseEnd)
+                {
+                    report.ExerciseFrames++;
+                    continue;
+                }
+                if (pipeline.IsRefining)
+                {
+                    report.Refinement = pipeline.EndRefinement();
+                    scaled = pipeline.ScaledAvatar;
+                    report.AvatarMeasurements = ProportionFitter.MeasureSkeleton(scaled);
+                    report.Profile = pipeline.ActiveProfile;
+                    continue; // this frame was solved on the avatar before; the next one is the refined avatar's
                 }
                 SkeletonPose pose = pipeline.Pose;
                 if (pipeline.LastSwapTime == frame.Time) report.RoleSwaps++;

@@ -1,0 +1,51 @@
+using System;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// What a <see cref="ProportionRefinement"/> found for one limb (an arm: shoulder to wrist target; a leg: hip joint to
+    /// ankle target), in metres. The residual is the robust longest distance from the limb's root joint to its target
+    /// (<see cref="ProportionRefinement.Percentile"/> of the exercise's frames) minus the limb's length: positive, the
+    /// target was out of reach by that much; negative, the limb was never stretched that far. An immutable value.
+    /// </summary>
+    public readonly struct LimbRefinement
+    {
+        /// <summary>Creates a limb's result.</summary>
+        public LimbRefinement(int samples, float lengthBefore, float reach, float lengthAfter, bool refined)
+        {
+            Samples = samples;
+            LengthBefore = lengthBefore;
+            Reach = reach;
+            LengthAfter = lengthAfter;
+            Refined = refined;
+        }
+
+        /// <summary>How many frames of the exercise had this limb's target tracked.</summary>
+        public int Samples { get; }
+
+        /// <summary>The avatar's limb length (upper segment plus lower) before the refinement.</summary>
+        public float LengthBefore { get; }
+
+        /// <summary>The robust longest root-to-target distance seen in the exercise (NaN without samples).</summary>
+        public float Reach { get; }
+
+        /// <summary>The avatar's limb length after the refinement (<see cref="LengthBefore"/> when not refined).</summary>
+        public float LengthAfter { get; }
+
+        /// <summary>True when the limb's length was changed.</summary>
+        public bool Refined { get; }
+
+        /// <summary><see cref="Reach"/> minus <see cref="LengthBefore"/>: the reach deficit (arm) or length mismatch (leg) before.</summary>
+        public float ResidualBefore => Reach - LengthBefore;
+
+        /// <summary>
+        /// <see cref="Reach"/> minus <see cref="LengthAfter"/>: the residual the refined avatar has on the exercise's targets,
+        /// predicted (the targets do not depend on the limb's length where the hand is placed from the palm on the controller).
+        /// </summary>
+        public float ResidualAfter => Reach - LengthAfter;
+
+        /// <inheritdoc/>
+        public override string ToString() => FormattableString.Invariant(
+            $"{LengthBefore * 1000:0} -> {LengthAfter * 1000:0} mm ({(Refined ? "refined" : "kept")}), residual {ResidualBefore * 1000:+0.0;-0.0} -> {ResidualAfter * 1000:+0.0;-0.0} mm over {Samples} frames");
+    }
+}
