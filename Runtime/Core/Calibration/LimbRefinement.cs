@@ -11,8 +11,9 @@ namespace AvatarGo.Core
     public readonly struct LimbRefinement
     {
         /// <summary>Creates a limb's result.</summary>
-        public LimbRefinement(int samples, float lengthBefore, float reach, float lengthAfter, bool refined)
+        public LimbRefinement(int samples, float lengthBefore, float reach, float lengthAfter, bool refined, float shoulderOffset = float.NaN)
         {
+            ShoulderOffset = shoulderOffset;
             Samples = samples;
             LengthBefore = lengthBefore;
             Reach = reach;
@@ -32,6 +33,13 @@ namespace AvatarGo.Core
         /// <summary>The avatar's limb length after the refinement (<see cref="LengthBefore"/> when not refined).</summary>
         public float LengthAfter { get; }
 
+        /// <summary>
+        /// For an arm: how far (m) the centre of its motion (the sphere its targets lie on, in the torso's frame) is from
+        /// the avatar's shoulder joint, the reach being measured from that centre; NaN for a leg, or where the fit was
+        /// ill-posed and the reach is measured from the avatar's shoulder.
+        /// </summary>
+        public float ShoulderOffset { get; }
+
         /// <summary>True when the limb's length was changed.</summary>
         public bool Refined { get; }
 
@@ -46,6 +54,6 @@ namespace AvatarGo.Core
 
         /// <inheritdoc/>
         public override string ToString() => FormattableString.Invariant(
-            $"{LengthBefore * 1000:0} -> {LengthAfter * 1000:0} mm ({(Refined ? "refined" : "kept")}), residual {ResidualBefore * 1000:+0.0;-0.0} -> {ResidualAfter * 1000:+0.0;-0.0} mm over {Samples} frames");
+            $"{LengthBefore * 1000:0} -> {LengthAfter * 1000:0} mm ({(Refined ? "refined" : "kept")}), residual {ResidualBefore * 1000:+0.0;-0.0} -> {ResidualAfter * 1000:+0.0;-0.0} mm over {Samples} frames{(float.IsNaN(ShoulderOffset) ? "" : $", centre {ShoulderOffset * 1000:0} mm from the shoulder")}");
     }
 }

@@ -33,6 +33,9 @@ namespace AvatarGo.Core
         private readonly int[] _counts = new int[4];
         private readonly float[] _lengths = new float[4];
         private readonly int[] _roots = new int[4];
+        private readonly Vector3[][] _inTorso = new Vector3[2][];   // the arms' targets in the hips target's frame
+        private readonly int[] _torsoCounts = new int[2];
+        private readonly Vector3[] _shoulderInTorso = new Vector3[2]; // the avatar's shoulder joint in the hips joint's frame
         private int _frames;
         private bool _truncated;
 
@@ -64,6 +67,11 @@ namespace AvatarGo.Core
                 HumanoidBone end = l < 2 ? HumanoidBone.LeftHand : HumanoidBone.LeftFoot;
                 int r = scaledAvatar[HumanoidBones.OnSide(root, side)], m = scaledAvatar[HumanoidBones.OnSide(middle, side)], e = scaledAvatar[HumanoidBones.OnSide(end, side)];
                 _roots[l] = r;
+                if (l < 2)
+                {
+                    _shoulderInTorso[l] = rest[scaledAvatar[HumanoidBone.Hips]].InverseTransformPoint(rest[r].Position);
+                    _inTorso[l] = new Vector3[capacity];
+                }
                 _lengths[l] = Vector3.Distance(rest[r].Position, rest[m].Position) + Vector3.Distance(rest[m].Position, rest[e].Position);
             }
         }
@@ -87,6 +95,7 @@ namespace AvatarGo.Core
         public void Begin()
         {
             for (int l = 0; l < 4; l++) _counts[l] = 0;
+            _torsoCounts[0] = _torsoCounts[1] = 0;
             _frames = 0;
             _truncated = false;
             IsRecording = true;
@@ -103,17 +112,19 @@ namespace AvatarGo.Core
             if (_frames >= Capacity) { _truncated = true; return; }
             _frames++;
             RigidPose[] w = pose.World;
-            Record(0, in targets.LeftHand, w);
-            Record(1, in targets.RightHand, w);
-            Record(2, in targets.LeftFoot, w);
-            Record(3, in targets.RightFoot, w);
+            Record(0, in targets.LeftHand, w, in targets);
+            Record(1, in targets.RightHand, w, in targets);
+            Record(2, in targets.LeftFoot, w, in targets);
+            Record(3, in targets.RightFoot, w, in targets);
         }
 
-        private void Record(int limb, in LimbTarget target, RigidPose[] world)
+        private void Record(int limb, in LimbTarget target, RigidPose[] world, in BodyTargets targets)
         {
             if (!target.IsActive) return;
             float d = Vector3.Distance(world[_roots[limb]].Position, target.Goal.Position);
             if (!Vectors.IsFinite(d)) return;
+            if (limb < 2 && targets.HipsActive && targets.Hips.IsValid)
+                _inTorso[limb][_torsoCounts[limb]++] = targets.Hips.InverseTransformPoint(target.Goal.Position);
             _distances[limb][_counts[limb]++] = d;
         }
 
@@ -127,7 +138,23 @@ namespace AvatarGo.Core
             IsRecording = false;
             var report = new RefinementReport { Frames = _frames, Truncated = _truncated, Before = _current };
             var reach = new float[4];
+            var centreOffset = new float[4];
             for (int l = 0; l < 4; l++) reach[l] = RobustMax(_distances[l], _counts[l]);
+            for (int a = 0; a < 2; a++)
+            {
+                // The wearer's own shoulder: the centre of the sphere the stretched arm's targets lie on in the hips target's
+                // frame (the pelvis tracker's), so that the avatar's shoulder, where the solver puts it (leaning the avatar's
+                // spine toward a target out of reach, for one), does not count as arm.
+                centreOffset[a] = float.NaN;
+                int n = _torsoCounts[a];
+                if (n < MinimumSamples || !FitSphereCentre(_inTorso[a], n, out Vector3 centre)) continue;
+                float offset = Vector3.Distance(centre, _shoulderInTorso[a]);
+                if (offset > MaxShoulderOffset) continue; // an ill-posed fit (the arm not moved enough, or bent): the avatar's shoulder
+                var around = new float[n];
+                for (int i = 0; i < around.Length; i++) around[i] = Vector3.Distance(_inTorso[a][i], centre);
+                reach[a] = RobustMax(around, around.Length);
+                centreOffset[a] = offset;
+            }
             float[] ratio = { _current.LeftArm, _current.RightArm };
             bool[] refined = new bool[2];
             var why = new StringBuilder();
@@ -150,7 +177,7 @@ namespace AvatarGo.Core
             for (int a = 0; a < 2; a++)
             {
                 float after = refined[a] ? _lengths[a] * ratio[a] / _current.Arm((BodySide)a) : _lengths[a];
-                report.Limbs[a] = new LimbRefinement(_counts[a], _lengths[a], reach[a], after, refined[a]);
+                report.Limbs[a] = new LimbRefinement(_counts[a], _lengths[a], reach[a], after, refined[a], centreOffset[a]);
             }
             for (int l = 2; l < 4; l++) report.Limbs[l] = new LimbRefinement(_counts[l], _lengths[l], reach[l], _lengths[l], false);
             report.After = new BodyProportions(_current.LeftLeg, _current.RightLeg, ratio[0], ratio[1]);
@@ -161,6 +188,50 @@ namespace AvatarGo.Core
             if (_truncated) why.Append(FormattableString.Invariant($"; only the first {Capacity} frames were used"));
             report.Explanation = why.ToString();
             return report;
+        }
+
+        /// <summary>
+        /// Farthest (m) the fitted centre of an arm's motion may be from the avatar's shoulder joint for the reach to be
+        /// measured from it (10 cm); farther, the fit is taken as ill-posed and the reach is measured from the avatar's
+        /// shoulder (<see cref="LimbRefinement.ShoulderOffset"/> is then NaN).
+        /// </summary>
+        public const float MaxShoulderOffset = 0.1f;
+
+        // The least-squares sphere through n points (algebraic: |p|^2 = 2 c.p + k), its centre; false when the points do not
+        // span the three dimensions well enough for one (an arm moved in a plane only).
+        private static bool FitSphereCentre(Vector3[] points, int n, out Vector3 centre)
+        {
+            centre = default;
+            Vector3 mean = Vector3.Zero;
+            for (int i = 0; i < n; i++) mean += points[i];
+            mean /= n;
+            var m = new double[4, 5];
+            for (int i = 0; i < n; i++)
+            {
+                Vector3 q = points[i] - mean; // centred for conditioning
+                double[] row = { q.X, q.Y, q.Z, 1.0, q.LengthSquared() };
+                for (int r = 0; r < 4; r++)
+                    for (int c = 0; c < 5; c++) m[r, c] += row[r] * row[c];
+            }
+            // Too small a cloud (under 3 cm of standard deviation per axis on average); a flat one fails the pivots below.
+            double trace = m[0, 0] + m[1, 1] + m[2, 2];
+            if (trace / n < 3 * 0.03 * 0.03) return false;
+            for (int k = 0; k < 4; k++)
+            {
+                int pivot = k;
+                for (int r = k + 1; r < 4; r++) if (Math.Abs(m[r, k]) > Math.Abs(m[pivot, k])) pivot = r;
+                if (Math.Abs(m[pivot, k]) < 1e-12 * Math.Max(1.0, trace)) return false;
+                for (int c = 0; c < 5; c++) { double t = m[k, c]; m[k, c] = m[pivot, c]; m[pivot, c] = t; }
+                for (int r = 0; r < 4; r++)
+                {
+                    if (r == k) continue;
+                    double f = m[r, k] / m[k, k];
+                    for (int c = k; c < 5; c++) m[r, c] -= f * m[k, c];
+                }
+            }
+            // Unknowns (2cx, 2cy, 2cz, k) of |q|^2 = 2c.q + k.
+            centre = mean + new Vector3((float)(0.5 * m[0, 4] / m[0, 0]), (float)(0.5 * m[1, 4] / m[1, 1]), (float)(0.5 * m[2, 4] / m[2, 2]));
+            return Vectors.IsFinite(centre);
         }
 
         private static string Mm(float metres) => float.IsNaN(metres) ? "n/a" : FormattableString.Invariant($"{metres * 1000:+0.0;-0.0}");
