@@ -222,30 +222,20 @@ namespace AvatarGo.Core
         }
 
         /// <summary>
-        /// Where the wrist of <paramref name="map"/>'s hand sits in the frame of a controller held in it (with a handle of
-        /// <paramref name="handleRadius"/>): the grip on the palm the finger bones give, or on the palm estimated for a hand
-        /// without them (<see cref="HandModel.PalmWithoutFingers"/>), as <see cref="Grip"/> places it. It depends on the hand
-        /// (and, without finger bones, on the forearm's length through the estimated hand length: 0.36 × 0.8 of it), not on
-        /// where the arm puts the hand: a tracked controller pose <c>c</c> puts this hand's wrist at <c>c * result</c> whatever
-        /// the arm's length (the refinement from motion's wrist target, <see cref="ProportionRefinement"/>). Allocates.
+        /// Where a controller (with a handle of <paramref name="handleRadius"/>) held in the hand of <paramref name="map"/>'s
+        /// T-pose <paramref name="pose"/> sits (world): the grip on the palm the finger bones give, or on the palm estimated for
+        /// a hand without them (<see cref="HandModel.PalmWithoutFingers"/>), as <see cref="Grip"/> places it.
         /// </summary>
-        internal static RigidPose WristInGrip(HumanoidMap map, BodySide side, float handleRadius)
+        internal static RigidPose GripPose(HumanoidMap map, SkeletonPose pose, BodySide side, float handleRadius)
         {
-            var pose = new SkeletonPose(map.Skeleton);
-            TPoser.Apply(map, pose, RigidPose.Identity);
             RigidPose wrist = pose.World[map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]];
-            RigidPose grip;
             if (HandModel.CanModel(map, side, out _))
             {
                 var hand = new HandModel(map, side, pose);
-                grip = wrist * HandModel.GripPose(hand.PalmCentreInHand, hand.PalmNormalInHand, hand.AcrossInHand, handleRadius);
+                return wrist * HandModel.GripPose(hand.PalmCentreInHand, hand.PalmNormalInHand, hand.AcrossInHand, handleRadius);
             }
-            else
-            {
-                HandModel.PalmWithoutFingers(map, pose, side, out Vector3 centre, out Vector3 normal, out Vector3 across);
-                grip = HandModel.GripPose(centre, normal, across, handleRadius);
-            }
-            return grip.Inverse() * wrist;
+            HandModel.PalmWithoutFingers(map, pose, side, out Vector3 centre, out Vector3 normal, out Vector3 across);
+            return HandModel.GripPose(centre, normal, across, handleRadius);
         }
 
         /// <summary>The handle radius (m) assumed where no controller profile gives one (2 cm).</summary>

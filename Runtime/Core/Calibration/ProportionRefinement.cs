@@ -7,22 +7,28 @@ namespace AvatarGo.Core
     /// <summary>
     /// Refines the avatar's arm lengths from a short guided exercise after calibration (arm circles and reaches with the
     /// arms stretched, then squats): fed every solved frame of the exercise (<see cref="Add"/>, allocation-free), it
-    /// records each limb's distance from its root joint on the solved avatar (shoulder, hip joint) to its target (the
-    /// wrist's goal, the ankle's goal), and at the end (<see cref="Solve"/>) takes the robust longest one
-    /// (<see cref="Percentile"/>) as the length the limb needs for its target to be reachable.
+    /// records for each arm where its controller is (the hand targets given to <see cref="Add"/>, as the pipeline passes
+    /// them: the controllers' poses, not the wrists' goals) and for each leg the distance from its hip joint on the solved
+    /// avatar to the ankle's goal, and at the end (<see cref="Solve"/>) turns the arms' robust longest reach
+    /// (<see cref="Percentile"/>) into the arm length that reach needs.
     /// </summary>
     /// <remarks>
-    /// <para>What the motion identifies, and what it does not (Documentation~/calibration.md): an arm's reach, where the hand
-    /// is placed from the palm on the controller (<see cref="HandPlacement.PalmOnController"/>), so its target does not
-    /// depend on the arm's length: with the arm stretched the target is as far from the avatar's shoulder as the arm must
-    /// be long. A refined arm is held within <see cref="ProportionSettings.MinRatio"/>…<see cref="ProportionSettings.MaxRatio"/>
-    /// and changed only when its residual exceeds <see cref="Tolerance"/>. The legs are reported, never refined: the exact
-    /// offsets put the hips' and ankles' targets where the avatar's joints were at the walk-in, so standing the ankle
-    /// targets are exactly the avatar's leg length from the hip joints whatever the wearer's legs are; a leg length wrong
-    /// by the pelvis strap's offset and that offset trade off, and squats (knees bent) only shorten the distance.</para>
-    /// <para>Where the hand is placed by the offset measured at the walk-in (<see cref="HandPlacement.CalibratedOffset"/>),
-    /// that offset turns with the hand and keeps a stretched arm's target at the avatar's arm length: the exercise then
-    /// shows nothing to refine, and nothing is.</para>
+    /// <para>The arms, for every hand: the controllers do not depend on the avatar's arm length (the wrists' goals do
+    /// where the wrist is placed by the offset measured at the walk-in, <see cref="HandPlacement.CalibratedOffset"/>: that
+    /// offset turns with the hand and keeps a stretched arm's goal at the avatar's own length). The reach is measured from
+    /// the centre of the sphere the controller moves on in the hips target's frame (the pelvis tracker's; a least-squares
+    /// fit, <see cref="LimbRefinement.ShoulderOffset"/>), not from the avatar's solved shoulder, which the solver moves
+    /// (leaning the spine toward a target out of reach); where that fit is ill-posed (too little motion, a centre more
+    /// than <see cref="MaxShoulderOffset"/> from the avatar's shoulder, no hips target) from the avatar's shoulder. The
+    /// reach is then turned into an arm length by scaling the avatar's arm until its stretched T-pose holds the controller
+    /// that far from the shoulder, the grip placed as <see cref="ProportionFitter"/> places it (the palm of the finger bones,
+    /// or the palm estimated from the forearm, <see cref="HandModel.PalmWithoutFingers"/>, which grows with the arm). A refined
+    /// arm is held within <see cref="ProportionSettings.MinRatio"/>…<see cref="ProportionSettings.MaxRatio"/> and changed only
+    /// when its residual exceeds <see cref="Tolerance"/>.</para>
+    /// <para>The legs are reported, never refined: the exact offsets put the hips' and ankles' targets where the avatar's
+    /// joints were at the walk-in, so standing the ankle targets are exactly the avatar's leg length from the hip joints
+    /// whatever the wearer's legs are; a leg length wrong by the pelvis strap's offset and that offset trade off, and squats
+    /// (knees bent) only shorten the distance.</para>
     /// </remarks>
     public sealed class ProportionRefinement
     {
@@ -36,15 +42,19 @@ namespace AvatarGo.Core
         private readonly Vector3[][] _inTorso = new Vector3[2][];   // the arms' targets in the hips target's frame
         private readonly int[] _torsoCounts = new int[2];
         private readonly Vector3[] _shoulderInTorso = new Vector3[2]; // the avatar's shoulder joint in the hips joint's frame
+        private readonly float[] _handleRadius = new float[2];
+        private readonly float[] _gripReach = new float[2];           // the avatar's shoulder-to-controller distance, arm stretched
         private int _frames;
         private bool _truncated;
 
         /// <summary>
         /// Prepares a refinement of <paramref name="scaledAvatar"/> (the calibrated avatar, with proportions
-        /// <paramref name="current"/>), recording up to <paramref name="capacity"/> frames (20 s at 90 Hz by default).
+        /// <paramref name="current"/>), recording up to <paramref name="capacity"/> frames (20 s at 90 Hz by default); the
+        /// controllers' handles have the radii given (m; those of the hands' controller profiles, 2 cm without one).
         /// </summary>
         /// <exception cref="ArgumentException">The avatar lacks a required bone, or the capacity is not positive.</exception>
-        public ProportionRefinement(HumanoidMap scaledAvatar, BodyProportions current, ProportionSettings settings, int capacity = 1800)
+        public ProportionRefinement(HumanoidMap scaledAvatar, BodyProportions current, ProportionSettings settings, int capacity = 1800,
+            float leftHandleRadius = ProportionFitter.DefaultHandleRadius, float rightHandleRadius = ProportionFitter.DefaultHandleRadius)
         {
             _avatar = scaledAvatar ?? throw new ArgumentNullException(nameof(scaledAvatar));
             _settings = settings ?? throw new ArgumentNullException(nameof(settings));
@@ -53,11 +63,11 @@ namespace AvatarGo.Core
             scaledAvatar.RequireComplete(nameof(scaledAvatar));
             _current = current;
             Capacity = capacity;
-            Skeleton s = scaledAvatar.Skeleton;
-            var local = new RigidPose[s.JointCount];
-            var rest = new RigidPose[s.JointCount];
-            s.GetRestLocal(local);
-            s.ComputeWorld(local, rest); // distances between joints do not depend on the pose
+            _handleRadius[0] = leftHandleRadius;
+            _handleRadius[1] = rightHandleRadius;
+            var tpose = new SkeletonPose(scaledAvatar.Skeleton);
+            TPoser.Apply(scaledAvatar, tpose, RigidPose.Identity);
+            RigidPose[] rest = tpose.World;
             for (int l = 0; l < 4; l++)
             {
                 _distances[l] = new float[capacity];
@@ -67,15 +77,40 @@ namespace AvatarGo.Core
                 HumanoidBone end = l < 2 ? HumanoidBone.LeftHand : HumanoidBone.LeftFoot;
                 int r = scaledAvatar[HumanoidBones.OnSide(root, side)], m = scaledAvatar[HumanoidBones.OnSide(middle, side)], e = scaledAvatar[HumanoidBones.OnSide(end, side)];
                 _roots[l] = r;
+                _lengths[l] = Vector3.Distance(rest[r].Position, rest[m].Position) + Vector3.Distance(rest[m].Position, rest[e].Position);
                 if (l < 2)
                 {
                     _shoulderInTorso[l] = rest[scaledAvatar[HumanoidBone.Hips]].InverseTransformPoint(rest[r].Position);
                     _inTorso[l] = new Vector3[capacity];
                 }
-                _lengths[l] = Vector3.Distance(rest[r].Position, rest[m].Position) + Vector3.Distance(rest[m].Position, rest[e].Position);
             }
+            for (int a = 0; a < 2; a++) _gripReach[a] = GripReach((BodySide)a, 1f);
         }
 
+        // The avatar's shoulder-to-controller distance in its T-pose (arm stretched) with the arm on that side scaled by k.
+        private float GripReach(BodySide side, float k)
+        {
+            HumanoidMap map = k == 1f ? _avatar : new BodyProportions(1f, 1f, side == BodySide.Left ? k : 1f, side == BodySide.Right ? k : 1f).Apply(_avatar, 1f);
+            var pose = new SkeletonPose(map.Skeleton);
+            TPoser.Apply(map, pose, RigidPose.Identity);
+            Vector3 shoulder = pose.World[map[HumanoidBones.OnSide(HumanoidBone.LeftUpperArm, side)]].Position;
+            return Vector3.Distance(shoulder, ProportionFitter.GripPose(map, pose, side, _handleRadius[(int)side]).Position);
+        }
+
+        // The arm scale k whose grip reach is `reach` (secant steps from k = 1; the reach is nearly linear in k).
+        private float ScaleForReach(BodySide side, float reach)
+        {
+            float k0 = 1f, d0 = _gripReach[(int)side] - reach;
+            float k1 = reach / _gripReach[(int)side], d1 = GripReach(side, k1) - reach;
+            for (int i = 0; i < 4 && Math.Abs(d1) > 1e-4f && Math.Abs(d1 - d0) > 1e-7f; i++)
+            {
+                float k2 = k1 - d1 * (k1 - k0) / (d1 - d0);
+                k0 = k1; d0 = d1;
+                k1 = Math.Max(0.2f, Math.Min(5f, k2));
+                d1 = GripReach(side, k1) - reach;
+            }
+            return k1;
+        }
         /// <summary>The robust "longest" distance: this fraction of the exercise's frames has a shorter one (0.95).</summary>
         public const float Percentile = 0.95f;
 
@@ -102,9 +137,9 @@ namespace AvatarGo.Core
         }
 
         /// <summary>
-        /// Records one solved frame: <paramref name="targets"/> the frame's targets and <paramref name="pose"/> the avatar
-        /// solved to them (of the avatar given at construction). Ignored when not recording; a limb whose target is inactive
-        /// or not finite is skipped. Allocates nothing.
+        /// Records one solved frame: <paramref name="targets"/> the frame's targets, with the hands' goals the controllers'
+        /// poses (see the class remarks), and <paramref name="pose"/> the avatar solved to them (of the avatar given at
+        /// construction). Ignored when not recording; a limb whose target is inactive or not finite is skipped. Allocates nothing.
         /// </summary>
         public void Add(in BodyTargets targets, SkeletonPose pose)
         {
@@ -155,6 +190,10 @@ namespace AvatarGo.Core
                 reach[a] = RobustMax(around, around.Length);
                 centreOffset[a] = offset;
             }
+            // The controllers' reach as the arm length that gives it: the avatar's arm, scaled, until its stretched T-pose
+            // holds the controller that far from the shoulder (the grip placed as ProportionFitter places it).
+            for (int a = 0; a < 2; a++)
+                if (!float.IsNaN(reach[a])) reach[a] = _lengths[a] * ScaleForReach((BodySide)a, reach[a]);
             float[] ratio = { _current.LeftArm, _current.RightArm };
             bool[] refined = new bool[2];
             var why = new StringBuilder();

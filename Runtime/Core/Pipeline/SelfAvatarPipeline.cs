@@ -33,7 +33,6 @@ namespace AvatarGo.Core
         private readonly HandModel[] _hands = new HandModel[2];
         private readonly FingerSolver[] _fingers = new FingerSolver[2];
         private readonly RigidPose[] _controllerInWrist = new RigidPose[2];
-        private readonly RigidPose[] _reachWristInController = new RigidPose[2]; // the refinement's wrist targets (hand geometry only)
         private BodyTargetMapper _mapper;
         private SampleSanitizer _sanitizer;
         private TrackingContinuity _continuity;
@@ -237,10 +236,14 @@ namespace AvatarGo.Core
         public bool BeginRefinement(int capacity = 1800)
         {
             if (_mapper == null) return false;
-            _refinement = new ProportionRefinement(_calibrator.ScaledAvatar, _calibrator.Profile.Proportions, Settings.Calibration.Proportions, capacity);
+            _refinement = new ProportionRefinement(_calibrator.ScaledAvatar, _calibrator.Profile.Proportions, Settings.Calibration.Proportions, capacity,
+                HandleRadius(Settings.Hand(BodySide.Left).Controller), HandleRadius(Settings.Hand(BodySide.Right).Controller));
             _refinement.Begin();
             return true;
         }
+
+        private static float HandleRadius(ControllerProfile controller) =>
+            controller != null ? -controller.Shape.Distance(Vector3.Zero) : ProportionFitter.DefaultHandleRadius;
 
         /// <summary>True between <see cref="BeginRefinement"/> and <see cref="EndRefinement"/>.</summary>
         public bool IsRefining => _refinement != null && _refinement.IsRecording;
@@ -306,12 +309,6 @@ namespace AvatarGo.Core
                 HandState state = _handStates[(int)side];
                 state.Placement = state.HasFingerIk && Settings.Hand(side).Placement == HandPlacement.PalmOnController
                     ? HandPlacement.PalmOnController : HandPlacement.CalibratedOffset;
-                // The refinement's wrist target: from the controller and the hand's geometry alone (never the walk-in's
-                // offset, which holds a stretched arm's target at the avatar's own length).
-                ControllerProfile controller = Settings.Hand(side).Controller;
-                _reachWristInController[(int)side] = _hands[(int)side] != null && controller != null
-                    ? _hands[(int)side].WristInController(controller)
-                    : ProportionFitter.WristInGrip(_calibrator.ScaledAvatar, side, controller != null ? -controller.Shape.Distance(Vector3.Zero) : ProportionFitter.DefaultHandleRadius);
             }
             Bind(false);
         }
@@ -394,23 +391,24 @@ namespace AvatarGo.Core
             else _pose.CopyFrom(_lastGood); // never a NaN on a bone: keep the last good frame
             if (_refinement != null && _refinement.IsRecording)
             {
-                // The arms' targets from the controllers and the hands' geometry, which do not depend on the arms' length.
+                // The arms' targets are the controllers themselves: unlike the wrists' goals (placed by the walk-in's offset
+                // on most hands) they do not depend on the avatar's arm length.
                 BodyTargets reach = _targets;
-                ReachTarget(ref reach.LeftHand, DeviceRole.LeftHand, 0);
-                ReachTarget(ref reach.RightHand, DeviceRole.RightHand, 1);
+                ReachTarget(ref reach.LeftHand, DeviceRole.LeftHand);
+                ReachTarget(ref reach.RightHand, DeviceRole.RightHand);
                 _refinement.Add(in reach, _pose);
             }
             CheckForSwaps(time, dt);
         }
 
-        // The refinement's wrist target for one hand: the controller's pose (as the frame's target used it) times the wrist's
-        // place in the controller from the hand's geometry. Inactive when the frame's hand target is.
-        private void ReachTarget(ref LimbTarget target, DeviceRole role, int side)
+        // The refinement's target for one hand: the controller's pose, as the frame's target used it. Inactive when the
+        // frame's hand target is.
+        private void ReachTarget(ref LimbTarget target, DeviceRole role)
         {
             if (!target.IsActive) return;
             DeviceSample controller = _effective[_roles[role]];
             if (!controller.Pose.IsValid) { target.IsActive = false; return; }
-            target.Goal = controller.Pose * _reachWristInController[side];
+            target.Goal = controller.Pose;
         }
 
         // Controllers in the other hands, or trackers on the other feet: found from where the devices are.
