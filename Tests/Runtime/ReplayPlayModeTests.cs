@@ -13,8 +13,8 @@ namespace AvatarGo.Tests.Runtime
     /// <summary>
     /// A recorded session played frame by frame through the package's components (a <see cref="RecordedSessionTrackingSource"/>
     /// in stepped mode, the <see cref="AvatarGoCalibrator"/>, the <see cref="AvatarGoFingers"/> and the driver the calibrator
-    /// adds: the Transform driver, as this avatar has no humanoid Animator; the Animator IK path is not played here) on an
-    /// avatar made of GameObjects from the wearer's skeleton. Each test has an engine-free twin in
+    /// adds) on an avatar of the wearer's skeleton: GameObjects bound by their names (the Transform driver), or, in
+    /// <see cref="AnimatorIKDriverFollowsARecordedSession"/>, a humanoid mannequin driven by Animator IK. Each test has an engine-free twin in
     /// <c>Tests/Core/Shell/ReplayTwinTests.cs</c> with the same name, session and assertions (<see cref="ReplayCheck"/>).
     /// Needs the bundled clip on disk (<c>Tests/Core/Data~</c>, in the package folder): run in the Editor's play mode.
     /// </summary>
@@ -92,24 +92,54 @@ namespace AvatarGo.Tests.Runtime
             return null;
         }
 
-        private IEnumerator Play(string session, Run run)
+        /// <summary>
+        /// Twins: <c>AnimatorIkTargetsTests.TheTargetsReproduceThePipelinesSolve</c> (the goals, hints, hips and bone
+        /// rotations the driver sets reproduce the pipeline's solve within 1 mm) with <c>ReplayTwinTests.RecordedSessionFollowsTheGroundTruth</c>
+        /// (that solve follows the truth within these bounds). Here Unity's own humanoid IK does the solving, on a mannequin
+        /// of the wearer's skeleton made a humanoid with <see cref="MannequinBuilder"/>: the default Animator IK driver's path.
+        /// </summary>
+        [UnityTest]
+        public IEnumerator AnimatorIKDriverFollowsARecordedSession()
+        {
+            var run = new Run();
+            yield return Play(Session(), run, humanoid: true);
+            SelfAvatarPipeline pipeline = run.Calibrator.Pipeline;
+            Assert.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), pipeline.LastCalibrationStep.Message);
+            Assert.That(run.Calibrator.Animator.GetComponent<AvatarGoAnimatorIKDriver>(), Is.Not.Null, "the calibrator added the Animator IK driver");
+            Assert.That(run.Check.Failures(100), Is.Empty, run.Check.ToString());
+        }
+
+        private IEnumerator Play(string session, Run run, bool humanoid = false)
         {
             _file = Path.Combine(Path.GetTempPath(), "avatargo-playmode-" + Guid.NewGuid().ToString("N") + ".agsession");
             File.WriteAllText(_file, session);
             HumanoidMap wearer;
             using (SessionReader reader = SessionReader.Open(_file)) wearer = reader.Header.TruthHumanoid;
 
-            // The avatar: the wearer's skeleton in its rest pose, one GameObject per joint (bound by the bones' names).
-            List<HierarchyNode> nodes = ReplayScenario.AvatarNodes(wearer);
-            var made = new Transform[nodes.Count];
-            for (int n = 0; n < nodes.Count; n++)
+            // The avatar. Humanoid: a mannequin of the wearer's skeleton in T-pose with a humanoid Animator (Animator IK).
+            // Otherwise the wearer's skeleton in its rest pose, one GameObject per joint, bound by the bones' names.
+            Animator animator = null;
+            Transform root = null;
+            if (humanoid)
             {
-                var go = new GameObject(nodes[n].Name);
-                made[n] = go.transform;
-                if (nodes[n].Parent >= 0) made[n].SetParent(made[nodes[n].Parent], false);
-                else _made.Add(go);
-                made[n].localPosition = nodes[n].LocalPosition.ToUnity();
-                made[n].localRotation = nodes[n].LocalRotation.ToUnity();
+                animator = MannequinBuilder.Build(MannequinBlueprint.Create(wearer), null, null);
+                Assert.That(animator, Is.Not.Null, "Unity built the mannequin's humanoid Avatar");
+                _made.Add(animator.gameObject);
+            }
+            else
+            {
+                List<HierarchyNode> nodes = ReplayScenario.AvatarNodes(wearer);
+                var made = new Transform[nodes.Count];
+                for (int n = 0; n < nodes.Count; n++)
+                {
+                    var go = new GameObject(nodes[n].Name);
+                    made[n] = go.transform;
+                    if (nodes[n].Parent >= 0) made[n].SetParent(made[nodes[n].Parent], false);
+                    else _made.Add(go);
+                    made[n].localPosition = nodes[n].LocalPosition.ToUnity();
+                    made[n].localRotation = nodes[n].LocalRotation.ToUnity();
+                }
+                root = made[0];
             }
 
             // The prefab's components, as the prefab wires them, with the recorded source in the tracking slot.
@@ -121,7 +151,8 @@ namespace AvatarGo.Tests.Runtime
             Assert.That(source.Restart(), Is.True);
             run.Calibrator = rig.AddComponent<AvatarGoCalibrator>();
             run.Calibrator.Source = source;
-            run.Calibrator.AvatarRoot = made[0];
+            if (animator != null) run.Calibrator.Animator = animator;
+            else run.Calibrator.AvatarRoot = root;
             run.Calibrator.Offsets = OffsetMode.Exact;
             // Every test calibrates from its own session: a profile saved by an earlier test (same simulated serials, same
             // avatar) must not be restored, and none is written to the user's data folder.

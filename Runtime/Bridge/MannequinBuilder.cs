@@ -1,15 +1,15 @@
 using System.Collections.Generic;
-using AvatarGo;
 using AvatarGo.Core;
 using UnityEngine;
 
-namespace AvatarGo.Samples
+namespace AvatarGo
 {
     /// <summary>
     /// Builds a humanoid stand-in avatar in the scene from a <see cref="MannequinBlueprint"/>: one transform per joint in
     /// the T-pose, a Unity primitive per part, and a humanoid Avatar made with <c>AvatarBuilder.BuildHumanAvatar</c>, so
     /// the package's components drive it like any imported humanoid. Every decision (which joints, where the parts go,
-    /// how big) is the blueprint's; this only creates objects.
+    /// how big) is the blueprint's; this only creates objects. The headset-free sample and the play-mode tests build their
+    /// avatar with it; any skeleton a <see cref="HumanoidMap"/> describes (a BVH clip's, a session's wearer) can be one.
     /// </summary>
     public static class MannequinBuilder
     {
