@@ -141,6 +141,33 @@ namespace AvatarGo.Core.Tests
             Assert.That(report.Changed, Is.False);
         }
 
+        /// <summary>The pipeline's frames while the exercise is recorded (controllers as the arms' targets) allocate nothing.</summary>
+        [Test]
+        public void RefiningPipelineFrameAllocatesNothing()
+        {
+            string session = Simulate(BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true }), 1);
+            using var reader = new SessionReader(new StringReader(session), "refine");
+            var settings = new PipelineSettings();
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right }) settings.Hand(side).Controller = Wand();
+            var pipeline = new SelfAvatarPipeline(reader.Header.Devices, Proportions.ScaleLimbs(reader.Header.TruthHumanoid, 1.1f, 0.9f), settings);
+            SessionFrame frame = reader.CreateFrame();
+            while (pipeline.State != CalibrationState.Calibrated && reader.ReadFrame(frame)) pipeline.Update(frame);
+            Assert.That(pipeline.BeginRefinement(), Is.True);
+            for (int i = 0; i < 30 && reader.ReadFrame(frame); i++) pipeline.Update(frame); // warm up
+            var bytes = new long[300];
+            for (int k = 0; k < bytes.Length; k++)
+            {
+                Assert.That(reader.ReadFrame(frame), Is.True);
+                long t0 = GC.GetAllocatedBytesForCurrentThread();
+                pipeline.Update(frame);
+                bytes[k] = GC.GetAllocatedBytesForCurrentThread() - t0;
+            }
+            Assert.That(pipeline.IsRefining, Is.True);
+            Assert.That(bytes, Is.All.EqualTo(0L), "bytes allocated per refining frame");
+            RefinementReport report = pipeline.EndRefinement();
+            Assert.That(report.Arm(BodySide.Left).Samples, Is.EqualTo(330));
+        }
+
         /// <summary>
         /// Every shared clip: the numbers of Documentation~/calibration.md, with a wrong initial fit (the pelvis strap's offset
         /// assumed 2 cm off) and with the wrists placed by the walk-in's offset on every hand (fingered ones too).
