@@ -525,11 +525,6 @@ namespace AvatarGo
         }
 
         // A setup error: logged once with this component as context; the component disables itself.
-        private void Fail(string message)
-        {
-            _failed = true;
-            Debug.LogError($"{nameof(AvatarGoCalibrator)} on '{name}': {message}. The component disables itself.", this);
-            enabled = false;
-        }
+        private void Fail(string message) => SetupErrors.Fail(this, ref _failed, message);
     }
 }

@@ -193,8 +193,7 @@ namespace AvatarGo
         {
             if (_setUp) return !_failed;
             if (_failed) return false;
-            if (m_Calibrator == null) m_Calibrator = GetComponentInParent<AvatarGoCalibrator>();
-            if (m_Calibrator == null) return Fail("no calibrator is assigned or found in the parents");
+            if (!SetupErrors.FindCalibrator(this, ref m_Calibrator, ref _failed)) return false;
             _binding = m_Calibrator.Binding;
             if (_binding == null) return false; // the calibrator binds the avatar in its Start
             _animator = GetComponent<Animator>();
@@ -224,12 +223,6 @@ namespace AvatarGo
         }
 
         // A setup error: logged once with this component as context; the component disables itself.
-        private bool Fail(string message)
-        {
-            _failed = true;
-            Debug.LogError($"{nameof(AvatarGoAnimatorIKDriver)} on '{name}': {message}. The component disables itself.", this);
-            enabled = false;
-            return false;
-        }
+        private bool Fail(string message) => SetupErrors.Fail(this, ref _failed, message);
     }
 }

@@ -40,12 +40,7 @@ namespace AvatarGo
         private void LateUpdate()
         {
             if (_failed) return;
-            if (m_Calibrator == null) m_Calibrator = GetComponentInParent<AvatarGoCalibrator>();
-            if (m_Calibrator == null)
-            {
-                Fail("no calibrator is assigned or found in the parents");
-                return;
-            }
+            if (!SetupErrors.FindCalibrator(this, ref m_Calibrator, ref _failed)) return;
             HumanoidBinding binding = m_Calibrator.Binding;
             SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
             SkeletonPose pose = pipeline?.Pose;
@@ -56,14 +51,6 @@ namespace AvatarGo
                 _disabledAnimator.enabled = false;
             }
             binding.ApplyPose(pose, m_Calibrator.TrackingSpace, pipeline.Profile.AvatarScale);
-        }
-
-        // A setup error: logged once with this component as context; the component disables itself.
-        private void Fail(string message)
-        {
-            _failed = true;
-            Debug.LogError($"{nameof(AvatarGoTransformDriver)} on '{name}': {message}. The component disables itself.", this);
-            enabled = false;
         }
     }
 }

@@ -124,12 +124,7 @@ namespace AvatarGo
         {
             if (_attached) return true;
             if (_failed) return false;
-            if (m_Calibrator == null) m_Calibrator = GetComponentInParent<AvatarGoCalibrator>();
-            if (m_Calibrator == null)
-            {
-                Fail("no calibrator is assigned or found in the parents");
-                return false;
-            }
+            if (!SetupErrors.FindCalibrator(this, ref m_Calibrator, ref _failed)) return false;
             m_Calibrator.Attach(this);
             _attached = true;
             return true;
@@ -153,14 +148,6 @@ namespace AvatarGo
                 Debug.LogError($"{nameof(AvatarGoFingers)} on '{name}': the {side} controller profile '{asset.name}' is not a valid profile ({e.Message}); that hand has no finger IK.", this);
             }
             return _profiles[s];
-        }
-
-        // A setup error: logged once with this component as context; the component disables itself.
-        private void Fail(string message)
-        {
-            _failed = true;
-            Debug.LogError($"{nameof(AvatarGoFingers)} on '{name}': {message}. The component disables itself.", this);
-            enabled = false;
         }
     }
 }

@@ -68,12 +68,7 @@ namespace AvatarGo
         private void LateUpdate()
         {
             if (_failed || m_Model == null) return;
-            if (m_Calibrator == null) m_Calibrator = GetComponentInParent<AvatarGoCalibrator>();
-            if (m_Calibrator == null)
-            {
-                Fail("no calibrator is assigned or found in the parents");
-                return;
-            }
+            if (!SetupErrors.FindCalibrator(this, ref m_Calibrator, ref _failed)) return;
             SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
             if (pipeline == null || pipeline.State != CalibrationState.Calibrated) return;
             HandState hand = pipeline.Hand(m_Hand);
@@ -94,14 +89,6 @@ namespace AvatarGo
             }
             DrawnInHand = hand.DrawnInHand;
             m_Model.SetWorldPose(controller * _offset);
-        }
-
-        // A setup error: logged once with this component as context; the component disables itself.
-        private void Fail(string message)
-        {
-            _failed = true;
-            Debug.LogError($"{nameof(AvatarGoHeldController)} on '{name}': {message}. The component disables itself.", this);
-            enabled = false;
         }
     }
 }

@@ -149,9 +149,8 @@ namespace AvatarGo
                 // An action bound to a control of another type (ReadValue<Vector3> on an axis): a setup error, logged once.
                 frame.Clear();
                 frame.Time = Time.timeAsDouble;
-                Debug.LogError("AvatarGo: the Input System Tracking Source cannot read its actions (" + e.Message +
-                               "): check that each is bound to a control of its type (Vector3, Quaternion, Integer, Axis). The component is disabled.", this);
-                enabled = false;
+                SetupErrors.Disable(this, "AvatarGo: the Input System Tracking Source cannot read its actions (" + e.Message +
+                                          "): check that each is bound to a control of its type (Vector3, Quaternion, Integer, Axis). The component is disabled.");
             }
         }
 
@@ -199,18 +198,8 @@ namespace AvatarGo
             }
         }
 
-        private InputSystemDeviceActions Device(int d)
-        {
-            switch (d)
-            {
-                case 0: return m_Head;
-                case 1: return m_LeftController;
-                case 2: return m_RightController;
-                case 3: return m_PelvisTracker;
-                case 4: return m_LeftFootTracker;
-                default: return m_RightFootTracker;
-            }
-        }
+        private InputSystemDeviceActions Device(int d) =>
+            RoleSlots.Pick(d, m_Head, m_LeftController, m_RightController, m_PelvisTracker, m_LeftFootTracker, m_RightFootTracker);
 
         private InputActionProperty Property(int k)
         {

@@ -55,8 +55,7 @@ namespace AvatarGo
         {
             if (string.IsNullOrEmpty(m_PoseAction))
             {
-                Debug.LogError("AvatarGo: the SteamVR Tracking Source has no pose action path; it is disabled.", this);
-                enabled = false;
+                SetupErrors.Disable(this, "AvatarGo: the SteamVR Tracking Source has no pose action path; it is disabled.");
             }
         }
 
@@ -67,9 +66,8 @@ namespace AvatarGo
             _pose = SteamVR_Input.GetPoseActionFromPath(m_PoseAction);
             if (_pose == null)
             {
-                Debug.LogError("AvatarGo: the SteamVR Tracking Source found no pose action '" + m_PoseAction +
-                               "' in the project's SteamVR actions (Window > SteamVR Input); it is disabled.", this);
-                enabled = false;
+                SetupErrors.Disable(this, "AvatarGo: the SteamVR Tracking Source found no pose action '" + m_PoseAction +
+                                          "' in the project's SteamVR actions (Window > SteamVR Input); it is disabled.");
                 return false;
             }
             _trigger = string.IsNullOrEmpty(m_TriggerAction) ? null : SteamVR_Input.GetSingleActionFromPath(m_TriggerAction);
@@ -118,12 +116,6 @@ namespace AvatarGo
                 frame.Grip[d] = _grip == null ? float.NaN : _grip.GetState(source) ? 1f : 0f;
                 _edges.Feed(d, d, trigger, button, frame.Events);
             }
-        }
-
-        private RigidPose ToTrackingSpace(Transform device)
-        {
-            RigidPose world = device.GetWorldPose();
-            return TrackingSpaceOrigin == null ? world : GetTrackingSpace().ToTracking(world);
         }
 
         // A device newly bound to a role: its OpenVR serial (allocates; once per change of device).

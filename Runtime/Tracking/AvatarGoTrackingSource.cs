@@ -41,5 +41,15 @@ namespace AvatarGo
         /// <summary>Where tracking space lies in the scene this frame.</summary>
         public TrackingSpace GetTrackingSpace() =>
             m_TrackingSpaceOrigin == null ? TrackingSpace.World : new TrackingSpace(m_TrackingSpaceOrigin.GetWorldPose());
+
+        /// <summary>
+        /// The pose of a device given as a <paramref name="device"/> transform (world space), in tracking space: relative to
+        /// <see cref="TrackingSpaceOrigin"/>, or the world pose when there is none. Allocation-free.
+        /// </summary>
+        protected RigidPose ToTrackingSpace(Transform device)
+        {
+            RigidPose world = device.GetWorldPose();
+            return m_TrackingSpaceOrigin == null ? world : GetTrackingSpace().ToTracking(world);
+        }
     }
 }

@@ -21,6 +21,13 @@ namespace AvatarGo
         [SerializeField, Tooltip("The tracker on the left foot.")] private Transform m_LeftFootTracker;
         [SerializeField, Tooltip("The tracker on the right foot.")] private Transform m_RightFootTracker;
 
+        // The serial of each role's transform device, in BodyRoles.All order.
+        private static readonly string[] Serials =
+        {
+            "transform-head", "transform-left-controller", "transform-right-controller",
+            "transform-pelvis", "transform-left-foot", "transform-right-foot",
+        };
+
         private SessionHeader _header;
         private readonly float[] _trigger = { float.NaN, float.NaN };
         private TriggerEdges _edges;
@@ -71,40 +78,17 @@ namespace AvatarGo
             for (int e = 0; e < _events.Count; e++) frame.Events.Add(_events[e]);
         }
 
-        private RigidPose ToTrackingSpace(Transform device)
-        {
-            RigidPose world = device.GetWorldPose();
-            return TrackingSpaceOrigin == null ? world : GetTrackingSpace().ToTracking(world);
-        }
-
-        private Transform DeviceTransform(int index)
-        {
-            switch (index)
-            {
-                case 0: return m_Head;
-                case 1: return m_LeftController;
-                case 2: return m_RightController;
-                case 3: return m_PelvisTracker;
-                case 4: return m_LeftFootTracker;
-                default: return m_RightFootTracker;
-            }
-        }
+        private Transform DeviceTransform(int index) =>
+            RoleSlots.Pick(index, m_Head, m_LeftController, m_RightController, m_PelvisTracker, m_LeftFootTracker, m_RightFootTracker);
 
         private SessionHeader CreateHeader()
         {
             // The transforms say which device plays which role; calibration still checks that against the T-pose.
-            var devices = new[]
-            {
-                new DeviceInfo(0, DeviceClass.Hmd, "transform-head"),
-                new DeviceInfo(1, DeviceClass.Controller, "transform-left-controller"),
-                new DeviceInfo(2, DeviceClass.Controller, "transform-right-controller"),
-                new DeviceInfo(3, DeviceClass.Tracker, "transform-pelvis", DeviceRole.Pelvis),
-                new DeviceInfo(4, DeviceClass.Tracker, "transform-left-foot", DeviceRole.LeftFoot),
-                new DeviceInfo(5, DeviceClass.Tracker, "transform-right-foot", DeviceRole.RightFoot),
-            };
-            _edges = new TriggerEdges(devices.Length);
+            var slots = new RoleSlotDevices();
+            for (int d = 0; d < BodyRoles.Count; d++) slots.SetSerial(BodyRoles.All[d], Serials[d]);
+            _edges = new TriggerEdges(BodyRoles.Count);
             HeaderVersion++;
-            return new SessionHeader(90f, devices);
+            return slots.Header;
         }
     }
 }

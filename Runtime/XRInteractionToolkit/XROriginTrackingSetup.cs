@@ -81,9 +81,8 @@ namespace AvatarGo
 #endif
             if (m_Source == null || m_Origin == null)
             {
-                Debug.LogError("AvatarGo: the XR Origin Tracking Setup found " + (m_Source == null ? "no tracking source on its object" : "no XR Origin in the scene") +
-                               "; assign it. The component is disabled.", this);
-                enabled = false;
+                SetupErrors.Disable(this, "AvatarGo: the XR Origin Tracking Setup found " + (m_Source == null ? "no tracking source on its object" : "no XR Origin in the scene") +
+                                          "; assign it. The component is disabled.");
                 return false;
             }
             Transform offset = m_Origin.CameraFloorOffsetObject != null ? m_Origin.CameraFloorOffsetObject.transform : m_Origin.transform;

@@ -3,8 +3,8 @@ using System;
 namespace AvatarGo.Core
 {
     /// <summary>
-    /// The device list of a source that reads one device per body role (Input System actions, SteamVR input sources):
-    /// six devices in <see cref="BodyRoles.All"/> order, id = index, the HMD and the controllers without a
+    /// The device list of a source that reads one device per body role (Input System actions, SteamVR input sources, plain
+    /// transforms): six devices in <see cref="BodyRoles.All"/> order, id = index, the HMD and the controllers without a
     /// runtime role (which hand holds which is the T-pose's to say), the trackers with the role their binding gives (the
     /// calibration checks it against the plane fit). A serial learned later (SteamVR reports one once a device is bound)
     /// gives a new header; nothing else changes it.

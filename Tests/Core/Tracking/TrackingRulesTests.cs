@@ -94,6 +94,33 @@ namespace AvatarGo.Core.Tests
             Assert.That(slots.Header.Devices[4].Serial, Is.Empty);
         }
 
+        [Test]
+        public void RoleSlotsWithSerialsAreTheTransformSourcesHeader()
+        {
+            // TransformTrackingSource's header, as it was written out before it came from RoleSlotDevices.
+            var expected = new[]
+            {
+                new DeviceInfo(0, DeviceClass.Hmd, "transform-head"),
+                new DeviceInfo(1, DeviceClass.Controller, "transform-left-controller"),
+                new DeviceInfo(2, DeviceClass.Controller, "transform-right-controller"),
+                new DeviceInfo(3, DeviceClass.Tracker, "transform-pelvis", DeviceRole.Pelvis),
+                new DeviceInfo(4, DeviceClass.Tracker, "transform-left-foot", DeviceRole.LeftFoot),
+                new DeviceInfo(5, DeviceClass.Tracker, "transform-right-foot", DeviceRole.RightFoot),
+            };
+            var slots = new RoleSlotDevices();
+            for (int i = 0; i < expected.Length; i++) slots.SetSerial(BodyRoles.All[i], expected[i].Serial);
+            Assert.That(slots.Header.Rate, Is.EqualTo(90f));
+            Assert.That(slots.Header.Devices.Count, Is.EqualTo(expected.Length));
+            for (int i = 0; i < expected.Length; i++)
+            {
+                DeviceInfo d = slots.Header.Devices[i];
+                Assert.That(d.Id, Is.EqualTo(expected[i].Id), i.ToString());
+                Assert.That(d.Class, Is.EqualTo(expected[i].Class), i.ToString());
+                Assert.That(d.Serial, Is.EqualTo(expected[i].Serial), i.ToString());
+                Assert.That(d.RuntimeRole, Is.EqualTo(expected[i].RuntimeRole), i.ToString());
+            }
+        }
+
         [TestCase("<XRController>{LeftHand}/devicePosition", 2, BodySide.Left)]
         [TestCase("<XRController>{RightHand}/pointerPosition", 2, BodySide.Right)]
         [TestCase("<xrcontroller>{righthand}/devicePosition", 2, BodySide.Right)]
