@@ -3,16 +3,17 @@ using System;
 namespace AvatarGo.Core
 {
     /// <summary>
-    /// What a <see cref="ProportionRefinement"/> found for one limb (an arm: shoulder to wrist target; a leg: hip joint to
-    /// ankle target), in metres. The residual is the robust longest distance from the limb's root joint to its target
-    /// (<see cref="ProportionRefinement.Percentile"/> of the exercise's frames) minus the limb's length: positive, the
-    /// target was out of reach by that much; negative, the limb was never stretched that far. An immutable value.
+    /// What a <see cref="ProportionRefinement"/> found for one limb, in metres. An arm: the length its controller's robust
+    /// longest reach from the shoulder (<see cref="ProportionRefinement.Percentile"/> of the exercise's frames) needs; a leg:
+    /// the robust longest distance from its hip joint to the ankle's target. The residual is that minus the limb's length:
+    /// positive, the limb is that much too short; negative, too long (an arm) or never stretched that far. An immutable value.
     /// </summary>
     public readonly struct LimbRefinement
     {
         /// <summary>Creates a limb's result.</summary>
-        public LimbRefinement(int samples, float lengthBefore, float reach, float lengthAfter, bool refined)
+        public LimbRefinement(int samples, float lengthBefore, float reach, float lengthAfter, bool refined, float shoulderOffset = float.NaN)
         {
+            ShoulderOffset = shoulderOffset;
             Samples = samples;
             LengthBefore = lengthBefore;
             Reach = reach;
@@ -26,11 +27,18 @@ namespace AvatarGo.Core
         /// <summary>The avatar's limb length (upper segment plus lower) before the refinement.</summary>
         public float LengthBefore { get; }
 
-        /// <summary>The robust longest root-to-target distance seen in the exercise (NaN without samples).</summary>
+        /// <summary>An arm: the length its reach in the exercise needs; a leg: the robust longest hip-to-ankle-target distance (NaN without samples).</summary>
         public float Reach { get; }
 
         /// <summary>The avatar's limb length after the refinement (<see cref="LengthBefore"/> when not refined).</summary>
         public float LengthAfter { get; }
+
+        /// <summary>
+        /// For an arm: how far (m) the centre of its motion (the sphere its targets lie on, in the torso's frame) is from
+        /// the avatar's shoulder joint, the reach being measured from that centre; NaN for a leg, or where the fit was
+        /// ill-posed and the reach is measured from the avatar's shoulder.
+        /// </summary>
+        public float ShoulderOffset { get; }
 
         /// <summary>True when the limb's length was changed.</summary>
         public bool Refined { get; }
@@ -40,12 +48,12 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// <see cref="Reach"/> minus <see cref="LengthAfter"/>: the residual the refined avatar has on the exercise's targets,
-        /// predicted (the targets do not depend on the limb's length where the hand is placed from the palm on the controller).
+        /// predicted (the arms' controllers do not depend on the arms' length).
         /// </summary>
         public float ResidualAfter => Reach - LengthAfter;
 
         /// <inheritdoc/>
         public override string ToString() => FormattableString.Invariant(
-            $"{LengthBefore * 1000:0} -> {LengthAfter * 1000:0} mm ({(Refined ? "refined" : "kept")}), residual {ResidualBefore * 1000:+0.0;-0.0} -> {ResidualAfter * 1000:+0.0;-0.0} mm over {Samples} frames");
+            $"{LengthBefore * 1000:0} -> {LengthAfter * 1000:0} mm ({(Refined ? "refined" : "kept")}), residual {ResidualBefore * 1000:+0.0;-0.0} -> {ResidualAfter * 1000:+0.0;-0.0} mm over {Samples} frames{(float.IsNaN(ShoulderOffset) ? "" : $", centre {ShoulderOffset * 1000:0} mm from the shoulder")}");
     }
 }

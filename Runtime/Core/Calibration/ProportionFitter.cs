@@ -221,6 +221,26 @@ namespace AvatarGo.Core
             return HandModel.GripPose(centre, normal, across, HandleRadius).Position;
         }
 
+        /// <summary>
+        /// Where a controller (with a handle of <paramref name="handleRadius"/>) held in the hand of <paramref name="map"/>'s
+        /// T-pose <paramref name="pose"/> sits (world): the grip on the palm the finger bones give, or on the palm estimated for
+        /// a hand without them (<see cref="HandModel.PalmWithoutFingers"/>), as <see cref="Grip"/> places it.
+        /// </summary>
+        internal static RigidPose GripPose(HumanoidMap map, SkeletonPose pose, BodySide side, float handleRadius)
+        {
+            RigidPose wrist = pose.World[map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]];
+            if (HandModel.CanModel(map, side, out _))
+            {
+                var hand = new HandModel(map, side, pose);
+                return wrist * HandModel.GripPose(hand.PalmCentreInHand, hand.PalmNormalInHand, hand.AcrossInHand, handleRadius);
+            }
+            HandModel.PalmWithoutFingers(map, pose, side, out Vector3 centre, out Vector3 normal, out Vector3 across);
+            return HandModel.GripPose(centre, normal, across, handleRadius);
+        }
+
+        /// <summary>The handle radius (m) assumed where no controller profile gives one (2 cm).</summary>
+        internal const float DefaultHandleRadius = HandleRadius;
+
         private static float Chain(Vector3 a, Vector3 b, Vector3 c) => Vector3.Distance(a, b) + Vector3.Distance(b, c);
     }
 }

@@ -236,10 +236,14 @@ namespace AvatarGo.Core
         public bool BeginRefinement(int capacity = 1800)
         {
             if (_mapper == null) return false;
-            _refinement = new ProportionRefinement(_calibrator.ScaledAvatar, _calibrator.Profile.Proportions, Settings.Calibration.Proportions, capacity);
+            _refinement = new ProportionRefinement(_calibrator.ScaledAvatar, _calibrator.Profile.Proportions, Settings.Calibration.Proportions, capacity,
+                HandleRadius(Settings.Hand(BodySide.Left).Controller), HandleRadius(Settings.Hand(BodySide.Right).Controller));
             _refinement.Begin();
             return true;
         }
+
+        private static float HandleRadius(ControllerProfile controller) =>
+            controller != null ? -controller.Shape.Distance(Vector3.Zero) : ProportionFitter.DefaultHandleRadius;
 
         /// <summary>True between <see cref="BeginRefinement"/> and <see cref="EndRefinement"/>.</summary>
         public bool IsRefining => _refinement != null && _refinement.IsRecording;
@@ -385,8 +389,26 @@ namespace AvatarGo.Core
             _pose.UpdateWorld();
             if (IsFinite(_pose)) _lastGood.CopyFrom(_pose);
             else _pose.CopyFrom(_lastGood); // never a NaN on a bone: keep the last good frame
-            _refinement?.Add(in _targets, _pose);
+            if (_refinement != null && _refinement.IsRecording)
+            {
+                // The arms' targets are the controllers themselves: unlike the wrists' goals (placed by the walk-in's offset
+                // on most hands) they do not depend on the avatar's arm length.
+                BodyTargets reach = _targets;
+                ReachTarget(ref reach.LeftHand, DeviceRole.LeftHand);
+                ReachTarget(ref reach.RightHand, DeviceRole.RightHand);
+                _refinement.Add(in reach, _pose);
+            }
             CheckForSwaps(time, dt);
+        }
+
+        // The refinement's target for one hand: the controller's pose, as the frame's target used it. Inactive when the
+        // frame's hand target is.
+        private void ReachTarget(ref LimbTarget target, DeviceRole role)
+        {
+            if (!target.IsActive) return;
+            DeviceSample controller = _effective[_roles[role]];
+            if (!controller.Pose.IsValid) { target.IsActive = false; return; }
+            target.Goal = controller.Pose;
         }
 
         // Controllers in the other hands, or trackers on the other feet: found from where the devices are.

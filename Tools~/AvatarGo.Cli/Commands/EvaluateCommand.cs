@@ -17,6 +17,7 @@ public sealed class EvaluateCommand : ICommand
         avatargo evaluate SESSION [--mode exact|fixed] [--scale-mode uniform|fitted] [--avatar FILE] [--leg-scale S] [--arm-scale S]
                          [--controller NAME|none] [--grip hold|open|point|input] [--hands palm|calibrated] [--json OUT]
                          [--knee-hint MODEL] [--elbow-hint MODEL] [--positions OUT.csv] [--bvh-out OUT.bvh] [--plot OUT.png]
+                         [--refine [--exercise-seconds S]]
 
         Replays SESSION through the whole pipeline (SelfAvatarPipeline: T-pose identification, scaling,
         walk-in offsets, body IK, hands on the controllers, finger IK) and compares the avatar (the
@@ -50,6 +51,14 @@ public sealed class EvaluateCommand : ICommand
           --knee-hint MODEL    how the knees' bend direction is chosen: pelvis-foot (default), pelvis, foot, toes,
                                ankle-hinge, calibration (Documentation~/solver.md compares them)
           --elbow-hint MODEL   how the elbows' bend direction is chosen: hand-axis (default), down-out-back, calibration
+          --refine             the refinement from motion (Documentation~/calibration.md): the S seconds after
+                               calibration are the exercise ('simulate --exercise-seconds S'), recorded and not
+                               scored; at their end the arms' lengths are refined from their reach and the rest of
+                               the session is scored on the refined avatar. Prints (and writes to --json, key
+                               "refinement") per limb the residual and the length before and after and whether it
+                               changed, and why (the legs are reported, never refined). Not with the disturbances
+                               or --positions / --bvh-out / --plot
+          --exercise-seconds S the exercise's length (default 8; the session's, as simulated)
         """ + EvaluationOutputs.Help + """
         Proportions: the wearer's true lengths (from the session's skeleton), the measured ones with their uncertainty,
         and the calibrated avatar's; the frames in which a hand could not reach its controller, and of those the ones
@@ -62,7 +71,7 @@ public sealed class EvaluateCommand : ICommand
 
     public int Run(string[] args, TextWriter stdout, TextWriter stderr)
     {
-        var a = new ArgReader(args);
+        var a = new ArgReader(args, "refine");
         string path = a.Positional0("SESSION");
         OffsetMode mode = ParseMode(a.String("mode", "exact"));
         string json = a.String("json");
@@ -77,7 +86,11 @@ public sealed class EvaluateCommand : ICommand
         };
         DisturbanceOptions disturbance = Disturbance(a);
         EvaluationOutputs outputs = EvaluationOutputs.FromArgs(a);
+        bool refine = a.Flag("refine");
+        double exerciseSeconds = a.Double("exercise-seconds", 8);
         a.ThrowOnUnknown(1);
+        if (refine && (disturbance != null || outputs.IsRecording)) throw new UsageException("--refine does not combine with disturbances or --positions / --bvh-out / --plot");
+        if (refine && !(exerciseSeconds > 0 && exerciseSeconds <= 60)) throw new UsageException("--exercise-seconds must be more than 0 and at most 60");
         if (!(legScale > 0.5f && legScale < 2f) || !(armScale > 0.5f && armScale < 2f)) throw new UsageException("limb scales must be between 0.5 and 2");
         EvaluationReport report;
         using (SessionReader reader = SessionReader.Open(path))
@@ -86,14 +99,22 @@ public sealed class EvaluateCommand : ICommand
                 ? CalibrateCommand.AvatarFrom(avatarFile)
                 : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no ground-truth skeleton; give --avatar FILE");
             if (legScale != 1f || armScale != 1f) avatar = Proportions.ScaleLimbs(avatar, legScale, armScale);
-            report = outputs.Evaluate(reader, settings, avatar, disturbance);
+            report = refine
+                ? SessionEvaluator.EvaluateExercise(reader, settings, avatar, (float)exerciseSeconds, true)
+                : outputs.Evaluate(reader, settings, avatar, disturbance);
         }
         if (report.Profile == null)
         {
             stderr.WriteLine($"avatargo evaluate: calibration did not complete: {report.CalibrationMessage}");
             return 1;
         }
+        if (refine && report.Refinement == null)
+        {
+            stderr.WriteLine($"avatargo evaluate: the session ended within the {exerciseSeconds.ToString(CultureInfo.InvariantCulture)} s of the exercise: nothing was refined");
+            return 1;
+        }
         Print(report, stdout);
+        if (report.Refinement != null) PrintRefinement(report.Refinement, stdout);
         if (json != null) AtomicFileWriter.WriteAllText(json, ToJson(report)); // whole or not at all: a failure leaves an older OUT as it was
         outputs.Write(stdout);
         return 0;
@@ -207,6 +228,45 @@ public sealed class EvaluateCommand : ICommand
             if (r.Fingers.Gap(f).Count > 0) Row(o, $"  {f} tip gap (mm)", r.Fingers.Gap(f));
     }
 
+    // The refinement from motion: per limb the residual and length before and after, refined or why not.
+    internal static void PrintRefinement(RefinementReport r, TextWriter o)
+    {
+        var inv = CultureInfo.InvariantCulture;
+        o.WriteLine(string.Create(inv, $"refinement from motion ({r.Frames} frames{(r.Truncated ? ", truncated" : "")}): proportions {r.Before} -> {r.After}"));
+        o.WriteLine("limb         frames  residual before  after (mm)  length before  after (mm)  result");
+        foreach (var (name, limb, leg) in RefinementLimbs(r))
+            o.WriteLine(string.Create(inv,
+                $"  {name,-10} {limb.Samples,6} {limb.ResidualBefore * 1000,16:+0.0;-0.0} {limb.ResidualAfter * 1000,11:+0.0;-0.0} {limb.LengthBefore * 1000,14:0.0} {limb.LengthAfter * 1000,11:0.0}  {(limb.Refined ? "refined" : leg ? "kept (legs are not identifiable)" : "kept (within the tolerance or too few frames)")}"));
+        o.WriteLine("  " + r.Explanation);
+    }
+
+    private static (string name, LimbRefinement limb, bool leg)[] RefinementLimbs(RefinementReport r) => new[]
+    {
+        ("left arm", r.Arm(BodySide.Left), false), ("right arm", r.Arm(BodySide.Right), false),
+        ("left leg", r.Leg(BodySide.Left), true), ("right leg", r.Leg(BodySide.Right), true),
+    };
+
+    internal static object RefinementJson(RefinementReport r) => r == null ? null : new
+    {
+        frames = r.Frames,
+        truncated = r.Truncated,
+        changed = r.Changed,
+        before = new { left_leg = r.Before.LeftLeg, right_leg = r.Before.RightLeg, left_arm = r.Before.LeftArm, right_arm = r.Before.RightArm },
+        after = new { left_leg = r.After.LeftLeg, right_leg = r.After.RightLeg, left_arm = r.After.LeftArm, right_arm = r.After.RightArm },
+        limbs = RefinementLimbs(r).ToDictionary(l => l.name.Replace(' ', '_'), l => new
+        {
+            samples = l.limb.Samples,
+            residual_before_mm = OrNull(l.limb.ResidualBefore * 1000.0),
+            residual_after_mm = OrNull(l.limb.ResidualAfter * 1000.0),
+            length_before_mm = l.limb.LengthBefore * 1000.0,
+            length_after_mm = l.limb.LengthAfter * 1000.0,
+            refined = l.limb.Refined,
+            shoulder_offset_mm = OrNull(l.limb.ShoulderOffset * 1000.0),
+            why = l.limb.Refined ? "refined" : l.leg ? "legs are not identifiable (leg length and pelvis strap offset trade off)" : "within the tolerance or too few frames",
+        }),
+        explanation = r.Explanation,
+    };
+
     // The wearer's true lengths, the measured ones and the calibrated avatar's; the unreachable hands.
     internal static void PrintProportions(EvaluationReport r, TextWriter o)
     {
@@ -313,6 +373,7 @@ public sealed class EvaluateCommand : ICommand
                 undisturbed_mm = Stats(r.Disturbance.UndisturbedMm),
             },
             bend_plane = BendPlanesJson(r),
+            refinement = RefinementJson(r.Refinement),
             fingers = r.Fingers == null ? null : new
             {
                 frames = r.Fingers.Frames,

@@ -54,6 +54,9 @@ internal sealed class EvaluationOutputs
     /// <summary>Reads the options (call before <see cref="ArgReader.ThrowOnUnknown"/>).</summary>
     public static EvaluationOutputs FromArgs(ArgReader a) => new(a.String("positions"), a.String("bvh-out"), a.String("plot"));
 
+    /// <summary>True when an output is asked for (every compared frame is then recorded).</summary>
+    public bool IsRecording => Recording;
+
     private bool Recording => _positions != null || _bvh != null || _plot != null;
 
     /// <summary>Runs the evaluation, recording every compared frame when an output is asked for.</summary>

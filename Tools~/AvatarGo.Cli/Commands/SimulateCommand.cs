@@ -28,6 +28,9 @@ public sealed class SimulateCommand : ICommand
           --misalign-deg DEG  and turned by DEG (default 0)
           --controller NAME   the controller held in the palm: a profile of Runtime/ControllerProfiles
                               (default vive-wand) or none for a generic 2 cm handle; evaluate with the same
+          --exercise-seconds S  after the walk-in, S seconds of the refinement exercise (arm circles and reaches
+                              with the arms stretched, then squats) before the clip (default 0: none); evaluate
+                              with --refine --exercise-seconds S
         Exit codes: 0 ok, 1 unreadable input, 2 bad arguments.
         """;
 
@@ -107,7 +110,9 @@ public sealed class SimulateCommand : ICommand
             Misalignment = new Vector3((float)(a.Double("misalign-mm", 0) / 1000.0), 0, 0),
             MisalignmentYawDegrees = (float)a.Double("misalign-deg", 0),
             Controller = ControllerProfiles.Named(a.String("controller", ControllerProfiles.Default)),
+            ExerciseSeconds = (float)a.Double("exercise-seconds", 0),
         };
+        if (!(o.ExerciseSeconds >= 0 && o.ExerciseSeconds <= 60)) throw new UsageException("--exercise-seconds must be between 0 and 60");
         if (!(o.Rate >= 10 && o.Rate <= 1000)) throw new UsageException("--rate must be between 10 and 1000 Hz");
         if (o.PositionNoise < 0 || o.RotationNoiseDegrees < 0) throw new UsageException("noise must not be negative");
         return o;

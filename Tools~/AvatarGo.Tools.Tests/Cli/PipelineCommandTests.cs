@@ -74,4 +74,48 @@ public class PipelineCommandTests
         }
         finally { File.Delete(session); File.Delete(json); }
     }
+
+    /// <summary>
+    /// simulate --exercise-seconds, then evaluate --refine: mocapbank's hands have no finger bones (wrists placed by the
+    /// walk-in's offset), the avatar's arms are 10 % short under uniform scaling; the report shows the arms' residual
+    /// before (the centimetres they lack), refines them, and reports the legs without refining them.
+    /// </summary>
+    [Test]
+    public void SimulateWithTheExerciseThenEvaluateRefinedPrintsTheRefinement()
+    {
+        string session = Path.Combine(Path.GetTempPath(), "avatargo-refine-" + System.Guid.NewGuid().ToString("N") + ".agsession");
+        string json = session + ".json";
+        try
+        {
+            var s = CliRunner.Run("simulate", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--out", session, "--exercise-seconds", "8");
+            Assert.That(s.ExitCode, Is.EqualTo(0), s.Stderr);
+            var e = CliRunner.Run("evaluate", session, "--refine", "--exercise-seconds", "8", "--arm-scale", "0.9", "--leg-scale", "1.1", "--json", json);
+            Assert.That(e.ExitCode, Is.EqualTo(0), e.Stderr);
+            StringAssert.Contains("refinement from motion", e.Stdout);
+            StringAssert.Contains("left arm", e.Stdout);
+            StringAssert.Contains("kept (legs are not identifiable)", e.Stdout);
+            using var doc = JsonDocument.Parse(File.ReadAllText(json));
+            var r = doc.RootElement.GetProperty("refinement");
+            Assert.That(r.GetProperty("changed").GetBoolean(), Is.True);
+            Assert.That(r.GetProperty("frames").GetInt32(), Is.GreaterThan(600), "8 s at 90 Hz");
+            foreach (string arm in new[] { "left_arm", "right_arm" })
+            {
+                var l = r.GetProperty("limbs").GetProperty(arm);
+                Assert.That(l.GetProperty("refined").GetBoolean(), Is.True, arm);
+                Assert.That(l.GetProperty("residual_before_mm").GetDouble(), Is.GreaterThan(40.0), arm + ": the arm was short");
+                Assert.That(System.Math.Abs(l.GetProperty("residual_after_mm").GetDouble()), Is.LessThan(10.0), arm + ": reachable after");
+                Assert.That(l.GetProperty("length_after_mm").GetDouble(), Is.GreaterThan(l.GetProperty("length_before_mm").GetDouble() + 40.0), arm);
+            }
+            foreach (string leg in new[] { "left_leg", "right_leg" })
+                Assert.That(r.GetProperty("limbs").GetProperty(leg).GetProperty("refined").GetBoolean(), Is.False, leg);
+            // Without --refine the same session has no refinement.
+            var plain = CliRunner.Run("evaluate", session, "--json", json);
+            Assert.That(plain.ExitCode, Is.EqualTo(0), plain.Stderr);
+            using var doc2 = JsonDocument.Parse(File.ReadAllText(json));
+            Assert.That(doc2.RootElement.GetProperty("refinement").ValueKind, Is.EqualTo(JsonValueKind.Null));
+            var bad = CliRunner.Run("evaluate", session, "--refine", "--dropout", "0.1");
+            Assert.That(bad.ExitCode, Is.EqualTo(2), "--refine with disturbances is refused");
+        }
+        finally { File.Delete(session); File.Delete(json); }
+    }
 }
