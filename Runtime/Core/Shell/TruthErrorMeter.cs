@@ -12,12 +12,6 @@ namespace AvatarGo.Core
     /// </summary>
     public sealed class TruthErrorMeter
     {
-        private static readonly bool[] IsEndEffector = Flags(HumanoidBone.Hips, HumanoidBone.Head, HumanoidBone.LeftHand,
-            HumanoidBone.RightHand, HumanoidBone.LeftFoot, HumanoidBone.RightFoot);
-
-        private static readonly bool[] IsMidJoint = Flags(HumanoidBone.LeftLowerArm, HumanoidBone.RightLowerArm,
-            HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg);
-
         private double _allSum, _endSum, _midSum;
         private long _allCount, _endCount, _midCount;
 
@@ -71,8 +65,8 @@ namespace AvatarGo.Core
                 double mm = Vector3.Distance(pose.World[avatar[bone]].Position, frame.Truth[b].Position) * 1000.0;
                 all += mm;
                 allN++;
-                if (IsEndEffector[b]) { end += mm; endN++; }
-                if (IsMidJoint[b]) { mid += mm; midN++; }
+                if (HumanoidBones.IsEndEffector(bone)) { end += mm; endN++; }
+                if (HumanoidBones.IsMidJoint(bone)) { mid += mm; midN++; }
             }
             if (allN == 0) return false;
             _allSum += all; _allCount += allN;
@@ -83,13 +77,6 @@ namespace AvatarGo.Core
             LastMidJointMm = midN > 0 ? mid / midN : double.NaN;
             Frames++;
             return true;
-        }
-
-        private static bool[] Flags(params HumanoidBone[] bones)
-        {
-            var flags = new bool[HumanoidBones.Count];
-            foreach (HumanoidBone bone in bones) flags[(int)bone] = true;
-            return flags;
         }
     }
 }

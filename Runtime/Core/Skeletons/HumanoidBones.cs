@@ -24,6 +24,33 @@ namespace AvatarGo.Core
             HumanoidBone.RightUpperArm, HumanoidBone.RightLowerArm, HumanoidBone.RightHand,
         };
 
+        /// <summary>
+        /// The end effectors: the joints the six devices drive (hips, head, both hands, both feet), in the order every error
+        /// report lists them.
+        /// </summary>
+        public static readonly HumanoidBone[] EndEffectors =
+            { HumanoidBone.Hips, HumanoidBone.Head, HumanoidBone.LeftHand, HumanoidBone.RightHand, HumanoidBone.LeftFoot, HumanoidBone.RightFoot };
+
+        /// <summary>The mid joints no device drives, which the IK places: the elbows and the knees.</summary>
+        public static readonly HumanoidBone[] MidJoints =
+            { HumanoidBone.LeftLowerArm, HumanoidBone.RightLowerArm, HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg };
+
+        private static readonly bool[] EndEffectorFlags = Flags(EndEffectors);
+        private static readonly bool[] MidJointFlags = Flags(MidJoints);
+
+        /// <summary>True for a bone of <see cref="EndEffectors"/> (a table read).</summary>
+        public static bool IsEndEffector(HumanoidBone bone) => IsValid(bone) && EndEffectorFlags[(int)bone];
+
+        /// <summary>True for a bone of <see cref="MidJoints"/> (a table read).</summary>
+        public static bool IsMidJoint(HumanoidBone bone) => IsValid(bone) && MidJointFlags[(int)bone];
+
+        private static bool[] Flags(HumanoidBone[] bones)
+        {
+            var flags = new bool[Count];
+            foreach (HumanoidBone bone in bones) flags[(int)bone] = true;
+            return flags;
+        }
+
         /// <summary>True for a bone listed in <see cref="Required"/>.</summary>
         public static bool IsRequired(HumanoidBone bone) => Array.IndexOf(Required, bone) >= 0;
 

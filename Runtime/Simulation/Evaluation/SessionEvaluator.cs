@@ -12,12 +12,6 @@ namespace AvatarGo.Simulation
     /// </summary>
     public static class SessionEvaluator
     {
-        private static readonly HumanoidBone[] EndEffectors =
-            { HumanoidBone.Hips, HumanoidBone.Head, HumanoidBone.LeftHand, HumanoidBone.RightHand, HumanoidBone.LeftFoot, HumanoidBone.RightFoot };
-
-        private static readonly HumanoidBone[] MidJoints =
-            { HumanoidBone.LeftLowerArm, HumanoidBone.RightLowerArm, HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg };
-
         /// <summary>
         /// The share of its length (shoulder to elbow plus elbow to wrist) beyond which the wearer's arm counts as fully
         /// stretched (0.98: the elbow within about 23° of straight), for <see cref="EvaluationReport.UnreachedWhileBentFrames"/>.
@@ -137,14 +131,14 @@ namespace AvatarGo.Simulation
                     if (!report.JointPositionMm.TryGetValue(bone, out ErrorSeries series)) report.JointPositionMm[bone] = series = new ErrorSeries();
                     series.Add(mm);
                     report.AllJointsMm.Add(mm);
-                    if (Array.IndexOf(EndEffectors, bone) >= 0)
+                    if (HumanoidBones.IsEndEffector(bone))
                     {
                         report.EndEffectorMm.Add(mm);
                         Quaternion avatarTurn = a.Rotation * Quaternion.Conjugate(avatarAtCalibration[b].Rotation);
                         Quaternion truthTurn = t.Rotation * Quaternion.Conjugate(truthAtCalibration[b].Rotation);
                         report.EndEffectorDegrees.Add(Rotations.AngleDegrees(avatarTurn, truthTurn));
                     }
-                    if (Array.IndexOf(MidJoints, bone) >= 0) report.MidJointMm.Add(mm);
+                    if (HumanoidBones.IsMidJoint(bone)) report.MidJointMm.Add(mm);
                 }
                 foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
                 {

@@ -34,14 +34,6 @@ namespace AvatarGo.Simulation
         /// <summary>The largest frame-to-frame jump of an end effector beyond the truth's own motion (mm), the tracking-loss bar.</summary>
         public const double JumpMm = 20.0;
 
-        /// <summary>The bones measured as end effectors.</summary>
-        public static readonly HumanoidBone[] EndEffectors =
-            { HumanoidBone.Hips, HumanoidBone.Head, HumanoidBone.LeftHand, HumanoidBone.RightHand, HumanoidBone.LeftFoot, HumanoidBone.RightFoot };
-
-        /// <summary>The bones measured as knees and elbows.</summary>
-        public static readonly HumanoidBone[] MidJoints =
-            { HumanoidBone.LeftLowerArm, HumanoidBone.RightLowerArm, HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg };
-
         private readonly Vector3[] _lastAvatar = new Vector3[6], _lastTruth = new Vector3[6];
         private readonly bool[] _hasLast = new bool[6];
 
@@ -81,9 +73,9 @@ namespace AvatarGo.Simulation
             Frames++;
             for (int d = 0; d < frame.Samples.Length; d++)
                 if (!frame.Samples[d].IsTracked) { FramesWithAnUntrackedDevice++; break; }
-            for (int e = 0; e < EndEffectors.Length; e++)
+            for (int e = 0; e < HumanoidBones.EndEffectors.Length; e++)
             {
-                HumanoidBone bone = EndEffectors[e];
+                HumanoidBone bone = HumanoidBones.EndEffectors[e];
                 Measure(frame, avatar, bone, EndEffectorMm);
                 Vector3? p = avatar(bone);
                 if (p == null || !frame.HasTruth[(int)bone]) continue;
@@ -94,7 +86,7 @@ namespace AvatarGo.Simulation
                 _lastTruth[e] = t;
                 _hasLast[e] = true;
             }
-            foreach (HumanoidBone bone in MidJoints) Measure(frame, avatar, bone, MidJointMm);
+            foreach (HumanoidBone bone in HumanoidBones.MidJoints) Measure(frame, avatar, bone, MidJointMm);
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {
                 HumanoidBone hip = HumanoidBones.OnSide(HumanoidBone.LeftUpperLeg, side);

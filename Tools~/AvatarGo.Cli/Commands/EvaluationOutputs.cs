@@ -19,9 +19,9 @@ namespace AvatarGo.Cli.Commands;
 internal sealed class EvaluationOutputs
 {
     /// <summary>The end effectors the plot draws (the evaluator's end-effector set).</summary>
-    private static readonly HumanoidBone[] EndEffectors =
-        { HumanoidBone.Hips, HumanoidBone.Head, HumanoidBone.LeftHand, HumanoidBone.RightHand, HumanoidBone.LeftFoot, HumanoidBone.RightFoot };
+    private static readonly HumanoidBone[] EndEffectors = HumanoidBones.EndEffectors;
 
+    // The evaluator's mid joints, knees first as the plot's panels are laid out.
     private static readonly HumanoidBone[] MidJoints =
         { HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg, HumanoidBone.LeftLowerArm, HumanoidBone.RightLowerArm };
 
