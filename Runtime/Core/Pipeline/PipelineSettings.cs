@@ -29,6 +29,20 @@ namespace AvatarGo.Core
         /// <summary>How the elbows' bend direction is chosen (<see cref="ElbowHintModel.HandAxis"/>); read when calibration completes.</summary>
         public ElbowHintModel ElbowHints { get; set; } = ElbowHintModel.HandAxis;
 
+        private float _shrugReleaseSeconds = FullBodyIk.DefaultShrugReleaseSeconds;
+
+        /// <summary>
+        /// How slowly a shoulder releases the shrug its hand needed to reach the controller (seconds,
+        /// <see cref="FullBodyIk.DefaultShrugReleaseSeconds"/>; 0 holds none); read when calibration completes.
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
+        public float ShrugReleaseSeconds
+        {
+            get => _shrugReleaseSeconds;
+            set => _shrugReleaseSeconds = value >= 0f && !float.IsInfinity(value) ? value
+                : throw new ArgumentOutOfRangeException(nameof(value), value, "The shrug release time must be 0 or more seconds.");
+        }
+
         /// <summary>The left hand's controller and grip.</summary>
         public HandSettings LeftHand { get; } = new HandSettings();
 

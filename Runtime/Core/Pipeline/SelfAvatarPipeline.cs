@@ -288,7 +288,7 @@ namespace AvatarGo.Core
             _lastGood.CopyFrom(calibrationPose);
             _targets = default;
             _report = default;
-            _ik = new FullBodyIk(scaled, calibrationPose);
+            _ik = new FullBodyIk(scaled, calibrationPose) { ShrugReleaseSeconds = Settings.ShrugReleaseSeconds };
             _window = new SampleWindow(_devices.Length, Settings.Calibration);
             TrackingSettings tracking = Settings.Tracking;
             _smoothing = tracking.Smoothing ? new OneEuroFilter(_devices.Length, tracking.SmoothingMinCutoff, tracking.SmoothingBeta) : null;
@@ -383,7 +383,7 @@ namespace AvatarGo.Core
                 return;
             }
             _mapper.Compute(_effective, ref _targets);
-            _report = _ik.Solve(in _targets, _pose);
+            _report = _ik.Solve(in _targets, _pose, dt);
             PlaceHand(BodySide.Left, in _targets.LeftHand, _report.LeftHand, _effective, trigger, grip);
             PlaceHand(BodySide.Right, in _targets.RightHand, _report.RightHand, _effective, trigger, grip);
             _pose.UpdateWorld();

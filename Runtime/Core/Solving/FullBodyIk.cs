@@ -7,7 +7,7 @@ namespace AvatarGo.Core
     /// <summary>
     /// Poses a whole humanoid skeleton from <see cref="BodyTargets"/>: the hips at their target, the spine bent
     /// toward the head target, the head turned like the HMD, then both legs and both arms by <see cref="TwoBoneIk"/>.
-    /// Built once per avatar; <see cref="Solve"/> allocates nothing.
+    /// Built once per avatar; solving allocates nothing. A clavicle keeps for a while the shrug its hand needed (<see cref="ShrugReleaseSeconds"/>).
     /// </summary>
     /// <remarks>
     /// Spine: the bend <see cref="BodyTargets.SpineBend"/> (the paper's angle α between w0 and wt, with its axis) is
@@ -36,6 +36,7 @@ namespace AvatarGo.Core
         private readonly int _leftClavicle, _rightClavicle;
         private readonly Quaternion _leftClavicleReference, _rightClavicleReference;
         private const float MaxClavicleDegrees = 20f;
+        private Quaternion _leftShrugHeld = Quaternion.Identity, _rightShrugHeld = Quaternion.Identity; // in each clavicle's parent frame
         private readonly int[] _spinePath;
         private readonly int _neck = -1;              // the neck, when it is the last spine joint and more come before it
         private readonly Vector3 _neckInHead;         // the neck joint in the head's frame, in the reference pose
@@ -91,14 +92,51 @@ namespace AvatarGo.Core
             _rightArm = new LimbChain(s, map[HumanoidBone.RightUpperArm], map[HumanoidBone.RightLowerArm], map[HumanoidBone.RightHand]);
         }
 
+        /// <summary>
+        /// How slowly a shrug is released (time constant, seconds): 3 s. The six devices see the clavicles only through the
+        /// hands' reach: a hand beyond its arm's reach needs its clavicle turned toward it, and a wearer whose shoulders sit
+        /// lower or further forward than in the T-pose (arms hanging: most of the time) keeps needing it. So the shrug a
+        /// hand needed is held, and moves the shoulder on the frames in between too, where the hand is in reach and says
+        /// nothing; eased back toward the calibration pose's clavicle, a shrug one reach needed does not stay for good.
+        /// Measured in Documentation~/solver.md; not fitted to the shared clips (3 s was chosen first, a posture's time scale,
+        /// 1.5 s and 3 s do better than no hold on each of them; longer holds trade the Rigify clip for MocapBank).
+        /// </summary>
+        public const float DefaultShrugReleaseSeconds = 3f;
+
+        private float _shrugReleaseSeconds = DefaultShrugReleaseSeconds;
+
+        /// <summary>
+        /// How slowly a held shrug is released (time constant, seconds; <see cref="DefaultShrugReleaseSeconds"/>); 0 holds
+        /// none: every frame's clavicles start from the calibration pose, as a single-frame solve does.
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
+        public float ShrugReleaseSeconds
+        {
+            get => _shrugReleaseSeconds;
+            set
+            {
+                if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The shrug release time must be 0 or more seconds.");
+                _shrugReleaseSeconds = value;
+                if (value == 0f) _leftShrugHeld = _rightShrugHeld = Quaternion.Identity;
+            }
+        }
+
         /// <summary>The avatar's humanoid map.</summary>
         public HumanoidMap Map { get; }
 
         /// <summary>
-        /// Poses <paramref name="pose"/> (its previous content is the starting point and what inactive parts keep).
-        /// On return <see cref="SkeletonPose.World"/> is up to date.
+        /// Poses <paramref name="pose"/> (its previous content is the starting point and what inactive parts keep), as a
+        /// single frame: no shrug is held from earlier frames or kept for later ones. On return
+        /// <see cref="SkeletonPose.World"/> is up to date.
         /// </summary>
-        public IkReport Solve(in BodyTargets targets, SkeletonPose pose)
+        public IkReport Solve(in BodyTargets targets, SkeletonPose pose) => Solve(in targets, pose, 0f);
+
+        /// <summary>
+        /// Poses <paramref name="pose"/> as the frame <paramref name="deltaSeconds"/> after the previous one: the clavicles
+        /// start from the shrug held from earlier frames (<see cref="ShrugReleaseSeconds"/>);
+        /// 0 solves the frame on its own and changes nothing held. Allocates nothing.
+        /// </summary>
+        public IkReport Solve(in BodyTargets targets, SkeletonPose pose, float deltaSeconds)
         {
             if (pose == null) throw new ArgumentNullException(nameof(pose));
             var report = new IkReport();
@@ -128,8 +166,9 @@ namespace AvatarGo.Core
 
             if (targets.LeftFoot.IsActive) report.LeftFoot = TwoBoneIk.Solve(pose, _leftLeg, targets.LeftFoot.Goal, targets.LeftFoot.Hint);
             if (targets.RightFoot.IsActive) report.RightFoot = TwoBoneIk.Solve(pose, _rightLeg, targets.RightFoot.Goal, targets.RightFoot.Hint);
-            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftClavicle, _leftClavicleReference, in targets.LeftHand);
-            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightClavicle, _rightClavicleReference, in targets.RightHand);
+            float dt = deltaSeconds > 0f && deltaSeconds < float.PositiveInfinity && _shrugReleaseSeconds > 0f ? deltaSeconds : 0f;
+            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftClavicle, _leftClavicleReference, ref _leftShrugHeld, in targets.LeftHand, dt, _shrugReleaseSeconds);
+            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightClavicle, _rightClavicleReference, ref _rightShrugHeld, in targets.RightHand, dt, _shrugReleaseSeconds);
             pose.UpdateWorld();
             return report;
         }
@@ -217,29 +256,52 @@ namespace AvatarGo.Core
             return Vector3.Distance(pose.World[_spine[0]].Position, pose.World[end].Position);
         }
 
-        // An arm whose hand cannot reach its goal first raises or pulls the clavicle toward it (up to
-        // MaxClavicleDegrees, as a shoulder shrugs), then solves again; what is still out of reach is reported.
-        private static LimbResult SolveArm(SkeletonPose pose, LimbChain arm, int clavicle, Quaternion clavicleReference, in LimbTarget target)
+        // An arm starts from its clavicle's held shrug; if its hand still cannot reach the goal, the clavicle turns toward it
+        // by the least angle that brings the goal within the arm's reach (up to MaxClavicleDegrees, as a shoulder shrugs),
+        // the arm is solved again, and the shrug is held if it was enough; what is still out of reach is reported.
+        private static LimbResult SolveArm(SkeletonPose pose, LimbChain arm, int clavicle, Quaternion clavicleReference, ref Quaternion held,
+            in LimbTarget target, float dt, float releaseSeconds)
         {
-            if (clavicle >= 0)
-            {
-                pose.Local[clavicle] = pose.Local[clavicle].WithRotation(clavicleReference);
-                int parent = pose.Skeleton.GetParent(clavicle);
-                pose.World[clavicle] = (parent < 0 ? pose.Origin : pose.World[parent]) * pose.Local[clavicle];
-            }
+            if (clavicle < 0) return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
+            int parent = pose.Skeleton.GetParent(clavicle);
+            if (dt > 0f) held = Quaternion.Normalize(Quaternion.Slerp(held, Quaternion.Identity, 1f - MathF.Exp(-dt / releaseSeconds)));
+            pose.Local[clavicle] = pose.Local[clavicle].WithRotation(Quaternion.Normalize(held * clavicleReference));
+            pose.World[clavicle] = (parent < 0 ? pose.Origin : pose.World[parent]) * pose.Local[clavicle];
             LimbResult result = TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
-            if (result.Reached || clavicle < 0 || !(result.DistanceLeft > 1e-4f)) return result;
-            Vector3 pivot = pose.World[clavicle].Position;
-            Vector3 shoulder = pose.World[arm.Root].Position;
-            Vector3 hand = pose.World[arm.End].Position;
-            Vector3 wanted = shoulder + (target.Goal.Position - hand);
-            Quaternion turn = Rotations.FromTo(shoulder - pivot, wanted - pivot);
+            if (result.Reached || !(result.DistanceLeft > 1e-4f)) return result;
+
+            Quaternion turn = ShrugToward(pose.World[clavicle].Position, pose.World[arm.Root].Position, pose.World[arm.End].Position, target.Goal.Position);
             float angle = Rotations.AngleDegrees(Quaternion.Identity, turn);
-            if (angle > MaxClavicleDegrees) turn = Quaternion.Slerp(Quaternion.Identity, turn, MaxClavicleDegrees / angle);
+            bool enough = angle <= MaxClavicleDegrees;
+            if (!enough) turn = Quaternion.Slerp(Quaternion.Identity, turn, MaxClavicleDegrees / angle);
             pose.RotateWorld(clavicle, turn);
-            int p = pose.Skeleton.GetParent(clavicle);
-            pose.World[clavicle] = (p < 0 ? pose.Origin : pose.World[p]) * pose.Local[clavicle];
+            pose.World[clavicle] = (parent < 0 ? pose.Origin : pose.World[parent]) * pose.Local[clavicle];
+            // Held only when it reaches the hand: a goal out of any shoulder's reach (swapped controllers, a glitch) says
+            // nothing about where the wearer's shoulder is.
+            if (dt > 0f && enough)
+            {
+                Quaternion parentRotation = parent < 0 ? pose.Origin.Rotation : pose.World[parent].Rotation;
+                held = Quaternion.Normalize(Quaternion.Conjugate(parentRotation) * turn * parentRotation * held);
+                float heldAngle = Rotations.AngleDegrees(Quaternion.Identity, held);
+                if (heldAngle > MaxClavicleDegrees) held = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Identity, held, MaxClavicleDegrees / heldAngle));
+            }
             return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
+        }
+
+        // The least turn of the clavicle about its pivot that brings the goal within reach of the stretched arm: the shoulder
+        // moves on the sphere about the pivot, in the plane of pivot, shoulder and goal, until its distance from the goal is
+        // the arm's reach (the law of cosines); toward the goal as far as it goes when no turn is enough.
+        private static Quaternion ShrugToward(Vector3 pivot, Vector3 shoulder, Vector3 hand, Vector3 goal)
+        {
+            float reach = Vector3.Distance(shoulder, hand) * (1f - 1e-4f);
+            Vector3 toShoulder = shoulder - pivot, toGoal = goal - pivot;
+            float c = toShoulder.Length(), d = toGoal.Length();
+            Vector3 axis = Vector3.Cross(toShoulder, toGoal);
+            if (!(c > 1e-6f) || !(d > 1e-6f) || !(axis.LengthSquared() > 1e-14f)) return Quaternion.Identity;
+            float alpha = MathF.Acos(Math.Clamp(Vector3.Dot(toShoulder, toGoal) / (c * d), -1f, 1f));
+            float cosNeeded = (c * c + d * d - reach * reach) / (2f * c * d);
+            float theta = alpha - MathF.Acos(Math.Clamp(cosNeeded, -1f, 1f));
+            return theta > 0f ? Quaternion.CreateFromAxisAngle(Vector3.Normalize(axis), theta) : Quaternion.Identity;
         }
     }
 }

@@ -90,7 +90,11 @@ namespace AvatarGo.Core.Tests
             double wristsAfter = ProportionFitTests.Median(after, HumanoidBone.LeftHand, HumanoidBone.RightHand);
             Assert.That(wristsAfter, Is.LessThan(0.5 * wristsBefore), "the wrists follow the wearer's");
             Assert.That(ProportionFitTests.Elbows(after), Is.LessThan(ProportionFitTests.Elbows(before)), "the elbows are no worse");
-            Assert.That(after.UnreachedWhileBentFrames, Is.LessThan(before.UnreachedWhileBentFrames / 2), "fewer hands out of reach");
+            TestContext.WriteLine($"hands out of reach: {before.UnreachedHandFrames} -> {after.UnreachedHandFrames} frames, with the wearer's arm bent {before.UnreachedWhileBentFrames} -> {after.UnreachedWhileBentFrames}");
+            // The held shrugs (FullBodyIk.ShrugReleaseSeconds) bring even the 7 cm short arms' hands to their controllers on all
+            // but about 1 % of the frames; the refined arms must not do worse, and never miss while the wearer's arm is bent.
+            Assert.That(after.UnreachedHandFrames, Is.LessThanOrEqualTo(before.UnreachedHandFrames), "no more hands out of reach");
+            Assert.That(after.UnreachedWhileBentFrames, Is.EqualTo(0), "no hand out of reach while the wearer's arm is bent");
         }
 
         /// <summary>A fit already right within the tolerance is kept: the refinement changes nothing.</summary>

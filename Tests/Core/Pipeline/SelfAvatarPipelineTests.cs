@@ -216,52 +216,61 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void TheSolvedPoseDoesNotDependOnTheFrameRate()
         {
-            // The same noise-free motion sampled at 72 and 144 Hz. With one calibration restored into both runs, the
-            // per-frame path has nothing that depends on the frame time: at the times both rates share, the avatar is the
-            // same up to the IK's convergence (each solve starts from the previous frame's pose, so the history differs:
-            // measured 0.47 mm). Calibrated at each rate, the T-pose and walk-in windows hold different samples of a wearer who sways,
-            // so the offsets (and the elbow) may differ by a little more.
+            // The same noise-free motion sampled at 72 and 144 Hz. With one calibration restored into both runs and no shrug
+            // held (ShrugReleaseSeconds 0), the per-frame path has nothing that depends on the frame time: at the times both
+            // rates share, the avatar is the same up to the IK's convergence (each solve starts from the previous frame's
+            // pose, so the history differs: measured 0.47 mm). Calibrated at each rate, the T-pose and walk-in windows hold
+            // different samples of a wearer who sways, so the offsets (and the elbow) may differ by a little more.
             var sessions = new Dictionary<int, string>();
             foreach (int rate in new[] { 72, 144 })
                 sessions[rate] = Sessions.Simulate("mocapbank_30fps.bvh", new SimulationOptions { Rate = rate, PositionNoise = 0, RotationNoiseDegrees = 0, Seed = 3 });
             CalibrationProfile profile = Sessions.Replay(sessions[72]).Profile;
             Assert.That(profile, Is.Not.Null, "the 72 Hz session calibrates");
 
-            float restored = LargestElbowDifference(rate => ReplayElbow(sessions[rate], profile));
-            float calibrated = LargestElbowDifference(rate => ReplayElbow(sessions[rate], null));
+            (float restored, _) = Difference(rate => Replay(sessions[rate], profile, 0f, HumanoidBone.LeftLowerArm));
+            (float calibrated, _) = Difference(rate => Replay(sessions[rate], null, 0f, HumanoidBone.LeftLowerArm));
             Assert.That(restored, Is.LessThanOrEqualTo(0.001f), "one calibration: left elbow, largest difference (m)");
             Assert.That(calibrated, Is.LessThanOrEqualTo(0.0015f), "calibrated at each rate: left elbow, largest difference (m)");
+
+            // Held shrugs are released over seconds at any rate, but what each one holds is the shrug of the frame that
+            // needed it, sampled at that frame: the shoulders differ by the arm's motion between samples (a few mm, an order
+            // below the 2-4 cm they correct on this clip, Documentation~/solver.md). A nearly straight elbow's position is that
+            // sensitive to its shoulder (1 mm nearer the hand moves it ~1.5 cm off the line), so for the elbow the typical
+            // frame is compared.
+            float release = FullBodyIk.DefaultShrugReleaseSeconds;
+            (float shoulder, _) = Difference(rate => Replay(sessions[rate], profile, release, HumanoidBone.LeftUpperArm));
+            (_, float elbowMedian) = Difference(rate => Replay(sessions[rate], profile, release, HumanoidBone.LeftLowerArm));
+            TestContext.WriteLine($"shrugs held: left shoulder largest difference {shoulder * 1000:F2} mm, left elbow median {elbowMedian * 1000:F2} mm");
+            Assert.That(shoulder, Is.LessThanOrEqualTo(0.005f), "shrugs held: left shoulder, largest difference (m)");
+            Assert.That(elbowMedian, Is.LessThanOrEqualTo(0.001f), "shrugs held: left elbow, median difference (m)");
         }
 
-        // The left elbow's world position at every solved frame, keyed by time in 1/720 s (a multiple of both periods).
-        private static Dictionary<long, Vector3> ReplayElbow(string session, CalibrationProfile restore)
+        // A joint's world position at every solved frame, keyed by time in 1/720 s (a multiple of both periods).
+        private static Dictionary<long, Vector3> Replay(string session, CalibrationProfile restore, float shrugReleaseSeconds, HumanoidBone bone)
         {
             var joints = new Dictionary<long, Vector3>();
             using SessionReader reader = Sessions.Read(session);
-            var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
+            var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid, new PipelineSettings { ShrugReleaseSeconds = shrugReleaseSeconds });
             if (restore != null) Assert.That(pipeline.TryRestore(restore), Is.True, "the profile's devices are the session's");
             SessionFrame f = reader.CreateFrame();
             while (reader.ReadFrame(f))
             {
                 pipeline.Update(f);
-                if (pipeline.State == CalibrationState.Calibrated) joints[(long)Math.Round(f.Time * 720)] = pipeline.Pose.World[pipeline.ScaledAvatar[HumanoidBone.LeftLowerArm]].Position;
+                if (pipeline.State == CalibrationState.Calibrated) joints[(long)Math.Round(f.Time * 720)] = pipeline.Pose.World[pipeline.ScaledAvatar[bone]].Position;
             }
             return joints;
         }
 
-        private static float LargestElbowDifference(Func<int, Dictionary<long, Vector3>> replay)
+        // The largest and the median distance between the 72 Hz and the 144 Hz positions at the times both have (m).
+        private static (float largest, float median) Difference(Func<int, Dictionary<long, Vector3>> replay)
         {
             Dictionary<long, Vector3> slow = replay(72), fast = replay(144);
-            int compared = 0;
-            float largest = 0f;
+            var distances = new List<float>();
             foreach (KeyValuePair<long, Vector3> s in slow)
-            {
-                if (!fast.TryGetValue(s.Key, out Vector3 f)) continue;
-                largest = Math.Max(largest, Vector3.Distance(s.Value, f));
-                compared++;
-            }
-            Assert.That(compared, Is.GreaterThan(300));
-            return largest;
+                if (fast.TryGetValue(s.Key, out Vector3 f)) distances.Add(Vector3.Distance(s.Value, f));
+            Assert.That(distances.Count, Is.GreaterThan(300));
+            distances.Sort();
+            return (distances[distances.Count - 1], distances[distances.Count / 2]);
         }
     }
 }
