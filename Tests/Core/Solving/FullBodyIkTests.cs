@@ -221,5 +221,109 @@ namespace AvatarGo.Core.Tests
             }
             Assert.That(bytes, Is.EqualTo(new long[bytes.Length]), "bytes allocated per window of 5 x 455 solves");
         }
+
+        // Frame 0 of mocapbank with the left hand's goal straight below its (unshrugged) shoulder, `beyond` metres farther
+        // than the arm reaches; the other parts at their true targets.
+        private static (FullBodyIk ik, SkeletonPose pose, BodyTargets targets, Truth truth) HangingArm(float beyond)
+        {
+            var truth = new Truth("mocapbank_30fps.bvh");
+            var ik = new FullBodyIk(truth.Map);
+            var pose = new SkeletonPose(truth.Clip.Skeleton);
+            var targets = new BodyTargets();
+            truth.Targets(0, ref targets);
+            ik.Solve(in targets, pose); // single frame: the clavicle at its reference, so the shoulder is where it starts
+            Vector3 shoulder = pose.World[truth[HumanoidBone.LeftUpperArm]].Position;
+            float arm = Vector3.Distance(shoulder, pose.World[truth[HumanoidBone.LeftLowerArm]].Position)
+                + Vector3.Distance(pose.World[truth[HumanoidBone.LeftLowerArm]].Position, pose.World[truth[HumanoidBone.LeftHand]].Position);
+            targets.LeftHand = new LimbTarget(new RigidPose(shoulder - Vector3.UnitY * (arm + beyond), targets.LeftHand.Goal.Rotation),
+                shoulder - Vector3.UnitY * (arm * 0.5f) - Vector3.UnitZ * 0.1f);
+            return (ik, pose, targets, truth);
+        }
+
+        private static float ClavicleTurnDegrees(SkeletonPose pose, Truth truth)
+        {
+            int clavicle = truth[HumanoidBone.LeftShoulder];
+            return Rotations.AngleDegrees(truth.Clip.Skeleton.GetRestLocal(clavicle).Rotation, pose.Local[clavicle].Rotation);
+        }
+
+        /// <summary>
+        /// A hand 2 cm beyond its arm's reach, straight below the shoulder, is reached by turning the clavicle down by the
+        /// least angle that does it (the arm's full reach then ends on the goal), in a single frame, well within the 20° a
+        /// shoulder shrugs; 40 cm beyond, the clavicle turns its 20° and the hand is reported out of reach by what is left.
+        /// </summary>
+        [Test]
+        public void AClavicleShrugsJustEnoughToReachTheHand()
+        {
+            var (ik, pose, targets, truth) = HangingArm(0.02f);
+            IkReport r = ik.Solve(in targets, pose);
+            Assert.That(r.LeftHand.Reached, Is.True, $"reached ({r.LeftHand.DistanceLeft * 1000:F2} mm left)");
+            float turn = ClavicleTurnDegrees(pose, truth);
+            Vector3 shoulder = pose.World[truth[HumanoidBone.LeftUpperArm]].Position, pivot = pose.World[truth[HumanoidBone.LeftShoulder]].Position;
+            float clavicle = Vector3.Distance(shoulder, pivot);
+            TestContext.WriteLine($"2 cm beyond: clavicle turned {turn:F2} deg ({clavicle * 1000:F0} mm long)");
+            // Lowering the shoulder by 2 cm on a clavicle of length c lying about level takes about asin(0.02 / c).
+            Assert.That(turn, Is.GreaterThan(0.5f * (float)(Math.Asin(0.02 / clavicle) * 180 / Math.PI)).And.LessThan(20f), "the least turn, not the largest");
+            float reach = Vector3.Distance(shoulder, targets.LeftHand.Goal.Position);
+            float arm = Vector3.Distance(shoulder, pose.World[truth[HumanoidBone.LeftLowerArm]].Position)
+                + Vector3.Distance(pose.World[truth[HumanoidBone.LeftLowerArm]].Position, pose.World[truth[HumanoidBone.LeftHand]].Position);
+            Assert.That(reach, Is.EqualTo(arm).Within(0.001f), "the goal at the arm's full reach from the shrugged shoulder (m)");
+
+            (ik, pose, targets, truth) = HangingArm(0.40f);
+            r = ik.Solve(in targets, pose);
+            Assert.That(r.LeftHand.Reached, Is.False, "40 cm beyond");
+            Assert.That(ClavicleTurnDegrees(pose, truth), Is.EqualTo(20f).Within(0.05f), "the shrug at its limit");
+            Assert.That(r.LeftHand.DistanceLeft, Is.GreaterThan(0.3f), "and the rest reported");
+        }
+
+        /// <summary>
+        /// A shrug that reached the hand is held: with the hand then 10 cm within reach, the clavicle eases back to its
+        /// reference with the time constant <see cref="FullBodyIk.DefaultShrugReleaseSeconds"/> (after 3 s, e^-1 of the
+        /// shrug is left), the same at 30 and 120 Hz. A single-frame solve holds nothing, a shrug that could not reach is
+        /// not held, and 0 s holds none.
+        /// </summary>
+        [Test]
+        public void AShrugThatReachedIsHeldAndReleasedOverSeconds()
+        {
+            foreach (int rate in new[] { 30, 120 })
+            {
+                var (ik, pose, targets, truth) = HangingArm(0.02f);
+                float dt = 1f / rate;
+                ik.Solve(in targets, pose, dt);
+                float shrug = ClavicleTurnDegrees(pose, truth);
+                BodyTargets within = targets;
+                Vector3 shoulder = pose.World[truth[HumanoidBone.LeftUpperArm]].Position;
+                within.LeftHand.Goal = new RigidPose(Vector3.Lerp(targets.LeftHand.Goal.Position, shoulder, 0.25f), targets.LeftHand.Goal.Rotation);
+                for (int i = 0; i < 3 * rate; i++) ik.Solve(in within, pose, dt);
+                float left = ClavicleTurnDegrees(pose, truth);
+                TestContext.WriteLine($"{rate} Hz: shrug {shrug:F2} deg, after 3 s {left:F2} deg ({left / shrug:F3} of it)");
+                Assert.That(left / shrug, Is.EqualTo((float)Math.Exp(-1)).Within(0.01f), $"{rate} Hz: e^-1 of the shrug left after 3 s");
+            }
+
+            var (ik1, pose1, targets1, truth1) = HangingArm(0.02f);
+            ik1.Solve(in targets1, pose1); // single frame
+            BodyTargets reachable = targets1;
+            reachable.LeftHand.Goal = new RigidPose(targets1.LeftHand.Goal.Position + Vector3.UnitY * 0.1f, targets1.LeftHand.Goal.Rotation);
+            ik1.Solve(in reachable, pose1, 1f / 90);
+            Assert.That(ClavicleTurnDegrees(pose1, truth1), Is.LessThan(1e-3f), "a single-frame solve holds nothing");
+
+            var (ik2, pose2, targets2, truth2) = HangingArm(0.40f);
+            ik2.Solve(in targets2, pose2, 1f / 90);
+            reachable = targets2;
+            reachable.LeftHand.Goal = new RigidPose(targets2.LeftHand.Goal.Position + Vector3.UnitY * 0.5f, targets2.LeftHand.Goal.Rotation);
+            ik2.Solve(in reachable, pose2, 1f / 90);
+            Assert.That(ClavicleTurnDegrees(pose2, truth2), Is.LessThan(1e-3f), "a shrug that could not reach is not held");
+
+            var (ik3, pose3, targets3, truth3) = HangingArm(0.02f);
+            ik3.ShrugReleaseSeconds = 0f;
+            ik3.Solve(in targets3, pose3, 1f / 90);
+            reachable = targets3;
+            reachable.LeftHand.Goal = new RigidPose(targets3.LeftHand.Goal.Position + Vector3.UnitY * 0.1f, targets3.LeftHand.Goal.Rotation);
+            ik3.Solve(in reachable, pose3, 1f / 90);
+            Assert.That(ClavicleTurnDegrees(pose3, truth3), Is.LessThan(1e-3f), "0 s holds none");
+
+            Assert.Throws<ArgumentOutOfRangeException>(() => ik3.ShrugReleaseSeconds = -1f);
+            Assert.Throws<ArgumentOutOfRangeException>(() => ik3.ShrugReleaseSeconds = float.NaN);
+            Assert.Throws<ArgumentOutOfRangeException>(() => new PipelineSettings().ShrugReleaseSeconds = float.PositiveInfinity);
+        }
     }
 }
