@@ -156,5 +156,127 @@ namespace AvatarGo.Core.Tests
             Assert.That(framesAfter, Is.EqualTo(600));
             Assert.That(maxToSolver, Is.LessThan(0.05), "every joint of the engine avatar with the refined bones is where the solver has it (mm)");
         }
-    }
+    
+        private static int DeviceOf(SessionHeader header, DeviceClass kind)
+        {
+            foreach (DeviceInfo d in header.Devices) if (d.Class == kind) return d.Id;
+            throw new InvalidOperationException("no " + kind);
+        }
+
+        /// <summary>
+        /// A controller's press ends the exercise early, but not in its first 2 s (the calibration's own press, or the other
+        /// trigger pressed with it), and a tracker's press never does: the calibration's rule.
+        /// </summary>
+        [Test]
+        public void AControllersPressEndsItEarlyButNotTooSoonNorATrackers()
+        {
+            var run = new Run(ScaleMode.Uniform);
+            int controller = DeviceOf(run.Reader.Header, DeviceClass.Controller), tracker = DeviceOf(run.Reader.Header, DeviceClass.Tracker);
+            double began = double.NaN, ended = double.NaN;
+            var ignored = new List<double>();
+            bool early = false, tracked = false, late = false;
+            while (run.Read() && double.IsNaN(ended))
+            {
+                double t = run.Frame.Time - began;
+                if (!early && t >= 1.0) { run.Frame.Events.Add(new DeviceEvent(controller, DeviceEventKind.TriggerPressed)); early = true; }
+                else if (!tracked && t >= 3.0) { run.Frame.Events.Add(new DeviceEvent(tracker, DeviceEventKind.TriggerPressed)); tracked = true; }
+                else if (!late && t >= 4.0) { run.Frame.Events.Add(new DeviceEvent(controller, DeviceEventKind.TriggerPressed)); late = true; }
+                (_, RefinementFlowEvents events) = run.Step();
+                if ((events & RefinementFlowEvents.Began) != 0) began = run.Frame.Time;
+                if ((events & RefinementFlowEvents.PressIgnored) != 0) { ignored.Add(t); TestContext.WriteLine($"{t:0.000} s: {run.Refinement.Explanation}"); }
+                if ((events & RefinementFlowEvents.Ended) != 0) { ended = run.Frame.Time; TestContext.WriteLine(run.Refinement.Explanation); }
+            }
+            Assert.That(ignored.Count, Is.EqualTo(2), "the press at 1 s and the tracker's at 3 s");
+            Assert.That(ignored[0], Is.EqualTo(1.0).Within(1.0 / 90 + 1e-9));
+            Assert.That(ignored[1], Is.EqualTo(3.0).Within(1.0 / 90 + 1e-9));
+            Assert.That(ended - began, Is.EqualTo(4.0).Within(1.0 / 90 + 1e-9), "ended by the controller's press at 4 s");
+            Assert.That(run.Refinement.Explanation, Does.Contain("by a trigger press"));
+            RefinementReport report = run.Refinement.LastReport;
+            Assert.That(report.Frames, Is.InRange(355, 365), "4 s recorded");
+            Assert.That(report.Changed, Is.True, $"4 s of the exercise are enough here ({report})");
+        }
+
+        /// <summary>Fitted proportions already right within the tolerance: the exercise keeps both arms and says so.</summary>
+        [Test]
+        public void ARightFitIsKeptAndSaysSo()
+        {
+            var run = new Run(ScaleMode.Fitted);
+            RefinementFlowEvents all = RefinementFlowEvents.None;
+            HumanoidMap avatar = null;
+            while (run.Read())
+            {
+                (_, RefinementFlowEvents events) = run.Step();
+                if ((events & RefinementFlowEvents.Began) != 0) avatar = run.Pipeline.ScaledAvatar;
+                all |= events;
+            }
+            RefinementReport report = run.Refinement.LastReport;
+            TestContext.WriteLine(report);
+            TestContext.WriteLine(run.Refinement.Summary);
+            Assert.That(all, Is.EqualTo(RefinementFlowEvents.Began | RefinementFlowEvents.Ended), "nothing to save, no arms changed");
+            Assert.That(run.Pipeline.ScaledAvatar, Is.SameAs(avatar), "the avatar is kept: the drivers have nothing to re-bind");
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+                Assert.That(Math.Abs(report.Arm(side).ResidualBefore) * 1000f, Is.LessThan(10f), $"{side}: within the tolerance ({report.Arm(side)})");
+            Assert.That(run.Refinement.Summary, Is.EqualTo(FormattableString.Invariant(
+                $"Arms kept: they already fit your reach.\nLeft arm: {report.Arm(BodySide.Left).LengthBefore * 1000f:0} mm, kept.\nRight arm: {report.Arm(BodySide.Right).LengthBefore * 1000f:0} mm, kept.")));
+        }
+
+        /// <summary>
+        /// Off, nothing starts; a reset or a restored calibration drops a running exercise without applying it (the pipeline
+        /// stops recording; the restore no longer leaves the old avatar's recording running), and the calibration's message is
+        /// shown again.
+        /// </summary>
+        [Test]
+        public void OffNothingStartsAndAResetOrARestoreDropsIt()
+        {
+            var off = new Run(ScaleMode.Uniform);
+            off.Refinement.Enabled = false;
+            RefinementFlowEvents all = RefinementFlowEvents.None;
+            while (off.Read())
+            {
+                all |= off.Step().Item2;
+                Assert.That(off.Pipeline.IsRefining, Is.False);
+                Assert.That(off.Refinement.Shown(off.Calibration.Message), Is.SameAs(off.Calibration.Message));
+            }
+            Assert.That(all, Is.EqualTo(RefinementFlowEvents.None));
+
+            var run = new Run(ScaleMode.Uniform);
+            double began = double.NaN;
+            CalibrationProfile profile = null;
+            bool reset = false, restored = false;
+            while (run.Read() && !restored)
+            {
+                double t = run.Frame.Time - began;
+                (_, RefinementFlowEvents events) = run.Step();
+                if ((events & RefinementFlowEvents.Began) != 0) { began = run.Frame.Time; profile = run.Pipeline.Profile; }
+                if (!reset && t >= 2.0)
+                {
+                    // The component's ResetCalibration: the pipeline and the calibration flow reset, then the refinement told.
+                    reset = true;
+                    run.Pipeline.Reset();
+                    CalibrationFlowEvents r = run.Calibration.Reset(run.Frame.Time, run.Pipeline.LastCalibrationStep.Message);
+                    Assert.That(run.Refinement.AfterUpdate(run.Frame.Time, run.Pipeline, r), Is.EqualTo(RefinementFlowEvents.Cancelled));
+                    Assert.That(run.Refinement.Phase, Is.EqualTo(RefinementPhase.Idle));
+                    Assert.That(run.Pipeline.IsRefining, Is.False);
+                    Assert.That(run.Refinement.Shown(run.Calibration.Message), Is.EqualTo(CalibrationMessages.Instruction(CalibrationState.WaitingForTPose)));
+                    // Restored, then the exercise started again by hand (as a script may): a restore drops it.
+                    Assert.That(run.Pipeline.TryRestore(profile), Is.True);
+                    run.Calibration.Restored(run.Frame.Time);
+                    Assert.That(run.Pipeline.BeginRefinement(), Is.True);
+                    Assert.That(run.Pipeline.TryRestore(profile), Is.True);
+                    Assert.That(run.Pipeline.IsRefining, Is.False, "a restore drops the recording made on the previous avatar");
+                    Assert.That(run.Refinement.LastReport, Is.Null, "nothing was applied");
+                    restored = true;
+                }
+            }
+            Assert.That(restored, Is.True);
+            // A flow whose exercise runs on a pipeline that was made again (new devices) drops it.
+            var other = new Run(ScaleMode.Uniform);
+            while (other.Read() && other.Refinement.Phase != RefinementPhase.Exercising) other.Step();
+            Assert.That(other.Refinement.BeforeUpdate(other.Frame, run.Pipeline), Is.EqualTo(RefinementFlowEvents.Cancelled));
+            Assert.That(other.Refinement.Phase, Is.EqualTo(RefinementPhase.Idle));
+            Assert.That(new RefinementFlow { ExerciseSeconds = 0.5f }.ExerciseSeconds, Is.EqualTo(RefinementFlow.MinimumExerciseSeconds));
+            Assert.That(new RefinementFlow { ExerciseSeconds = float.NaN }.ExerciseSeconds, Is.EqualTo(RefinementFlow.DefaultExerciseSeconds));
+            Assert.That(new RefinementFlow { ExerciseSeconds = 600f }.ExerciseSeconds, Is.EqualTo(RefinementFlow.MaximumExerciseSeconds));
+        }
+}
 }
