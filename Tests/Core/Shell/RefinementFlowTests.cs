@@ -156,7 +156,7 @@ namespace AvatarGo.Core.Tests
             Assert.That(framesAfter, Is.EqualTo(600));
             Assert.That(maxToSolver, Is.LessThan(0.05), "every joint of the engine avatar with the refined bones is where the solver has it (mm)");
         }
-    
+
         private static int DeviceOf(SessionHeader header, DeviceClass kind)
         {
             foreach (DeviceInfo d in header.Devices) if (d.Class == kind) return d.Id;
