@@ -71,6 +71,13 @@ namespace AvatarGo
         [SerializeField, Tooltip("Save each new calibration to Application.persistentDataPath/AvatarGo (atomically).")]
         private bool m_SaveProfile = true;
 
+        [SerializeField, Tooltip("After each new calibration (not a restored one), guide the wearer through a short exercise (arm circles with the arms stretched, reaches forward and overhead, two squats) " +
+            "and refine the avatar's arm lengths from their reach (calibration.md, Refinement from motion). Changed arms move the elbow and wrist bones as Scale Mode Fitted does. Off: the calibration is final.")]
+        private bool m_RefineAfterCalibration = false;
+
+        [SerializeField, Range(RefinementFlow.MinimumExerciseSeconds, RefinementFlow.MaximumExerciseSeconds), Tooltip("How long the refinement exercise lasts (s); a controller's trigger press after its first 2 s ends it early.")]
+        private float m_ExerciseSeconds = 8f; // RefinementFlow.DefaultExerciseSeconds (the prefab generator reads literals only)
+
         [SerializeField, Tooltip("Hide the avatar until the T-pose step has scaled and placed it.")]
         private bool m_HideAvatarUntilTPose = true;
 
@@ -110,7 +117,11 @@ namespace AvatarGo
         [SerializeField, Tooltip("The calibration was reset (cancel or redo).")]
         private UnityEvent m_OnCalibrationReset = new UnityEvent();
 
+        [SerializeField, Tooltip("The refinement exercise ended and was applied; the argument is true when the arms changed (the avatar was rebuilt with them, the profile saved again).")]
+        private UnityEvent<bool> m_OnRefined = new UnityEvent<bool>();
+
         private readonly CalibrationFlow _flow = new CalibrationFlow();
+        private readonly RefinementFlow _refinement = new RefinementFlow();
         private SelfAvatarPipeline _pipeline;
         private SessionFrame _frame;
         private int _headerVersion = int.MinValue;
@@ -139,6 +150,15 @@ namespace AvatarGo
         /// proportions it was measured with.
         /// </summary>
         public CoreScaleMode AvatarScaleMode { get => m_ScaleMode; set => m_ScaleMode = value; }
+
+        /// <summary>Whether each new calibration is followed by the refinement exercise (<see cref="Refinement"/>); read when a calibration completes.</summary>
+        public bool RefinesAfterCalibration { get => m_RefineAfterCalibration; set => m_RefineAfterCalibration = value; }
+
+        /// <summary>How long the refinement exercise lasts (s, 2…60); read when it starts.</summary>
+        public float ExerciseSeconds { get => m_ExerciseSeconds; set => m_ExerciseSeconds = value; }
+
+        /// <summary>The refinement exercise: its phase, what the wearer reads, the last report (<see cref="RefinementFlow.LastReport"/>).</summary>
+        public RefinementFlow Refinement => _refinement;
 
         /// <summary>Which bone transforms take the calibration's proportions, and where they are (null before <c>Start</c> binds the avatar).</summary>
         public ProportionedBones Bones => _bones;
@@ -201,6 +221,9 @@ namespace AvatarGo
         /// <summary>The calibration was reset.</summary>
         public UnityEvent OnCalibrationReset => m_OnCalibrationReset;
 
+        /// <summary>The refinement exercise ended and was applied; true when the arms changed (<see cref="RefinementFlow.LastReport"/> has the details).</summary>
+        public UnityEvent<bool> OnRefined => m_OnRefined;
+
         private string AvatarName => m_Animator != null && m_Animator.avatar != null ? m_Animator.avatar.name
             : Binding != null ? Binding.Root.name : name;
 
@@ -211,7 +234,8 @@ namespace AvatarGo
             if (_pipeline == null) return;
             _pipeline.Reset();
             ApplyProportions();
-            _flow.Reset(_hasFrame ? _frame.Time : 0.0, _pipeline.LastCalibrationStep.Message);
+            AnnounceRefinement(_refinement.AfterUpdate(_hasFrame ? _frame.Time : 0.0, _pipeline,
+                _flow.Reset(_hasFrame ? _frame.Time : 0.0, _pipeline.LastCalibrationStep.Message)));
             Debug.Log($"{nameof(AvatarGoCalibrator)}: calibration reset. {_pipeline.LastCalibrationStep.Message}", this);
             Raise(m_OnCalibrationReset);
         }
@@ -245,7 +269,7 @@ namespace AvatarGo
                 Debug.Log($"{nameof(AvatarGoCalibrator)}: the saved calibration's devices are not all connected (yet); calibrate, or wait for them.", this);
                 return false;
             }
-            _flow.Restored(_hasFrame ? _frame.Time : 0.0);
+            AnnounceRefinement(_refinement.AfterUpdate(_hasFrame ? _frame.Time : 0.0, _pipeline, _flow.Restored(_hasFrame ? _frame.Time : 0.0)));
             Debug.Log($"{nameof(AvatarGoCalibrator)}: calibration restored from {path}.", this);
             Raise(m_OnRestored);
             return true;
@@ -348,10 +372,14 @@ namespace AvatarGo
             if (_pipeline == null || m_Source.HeaderVersion != _headerVersion) Rebuild(header);
             if (_failed) return;
             CalibrationStep step;
+            RefinementFlowEvents refinement;
             try
             {
                 m_Source.Read(_frame);
                 TrackingSpace = m_Source.GetTrackingSpace();
+                // A refinement exercise that is over ends before the pipeline runs the frame, which is then solved on the
+                // refined avatar (every consumer picks the new ScaledAvatar and Pose up this frame).
+                refinement = _refinement.BeforeUpdate(_frame, _pipeline);
                 step = _pipeline.Update(_frame);
             }
             catch (Exception e)
@@ -361,8 +389,13 @@ namespace AvatarGo
                 return;
             }
             _hasFrame = true;
-            ApplyProportions();
-            Announce(_flow.Update(_frame.Time, step, _pipeline.State), step);
+            CalibrationFlowEvents events = _flow.Update(_frame.Time, step, _pipeline.State);
+            _refinement.Enabled = m_RefineAfterCalibration;
+            _refinement.ExerciseSeconds = m_ExerciseSeconds;
+            refinement |= _refinement.AfterUpdate(_frame.Time, _pipeline, events);
+            ApplyProportions(); // the refined arms too, the frame they change
+            Announce(events, step);
+            AnnounceRefinement(refinement);
             ShowFrame();
             // Each listener on its own: one that throws is logged and neither stops the others nor escapes Update.
             for (int i = 0; i < _frameRead.Count; i++)
@@ -389,6 +422,7 @@ namespace AvatarGo
         private void Rebuild(SessionHeader header)
         {
             SelfAvatarPipeline old = _pipeline;
+            AnnounceRefinement(_refinement.Cancel(old)); // an exercise recorded on the old pipeline is dropped
             var settings = new PipelineSettings { Offsets = m_Offsets };
             settings.Calibration.Proportions.Mode = m_ScaleMode;
             if (_fingers != null) _fingers.ConfigureHands(settings);
@@ -409,7 +443,7 @@ namespace AvatarGo
             {
                 if (_pipeline.TryRestore(old.Profile))
                 {
-                    _flow.Restored(now);
+                    _refinement.AfterUpdate(now, _pipeline, _flow.Restored(now));
                     Debug.Log($"{nameof(AvatarGoCalibrator)}: the devices changed; the calibration is kept (its devices are all still there).", this);
                     return;
                 }
@@ -442,6 +476,18 @@ namespace AvatarGo
             }
         }
 
+        private void AnnounceRefinement(RefinementFlowEvents events)
+        {
+            if (events == RefinementFlowEvents.None) return;
+            string log = $"{nameof(AvatarGoCalibrator)}: {_refinement.Explanation}";
+            if ((events & RefinementFlowEvents.BeginRefused) != 0) Debug.LogWarning(log, this);
+            if ((events & (RefinementFlowEvents.Began | RefinementFlowEvents.PressIgnored | RefinementFlowEvents.Cancelled)) != 0) Debug.Log(log, this);
+            if ((events & RefinementFlowEvents.Ended) == 0) return;
+            Debug.Log(log, this);
+            if ((events & RefinementFlowEvents.SaveProfile) != 0 && m_SaveProfile) SaveProfile();
+            Raise(m_OnRefined, (events & RefinementFlowEvents.ArmsChanged) != 0);
+        }
+
         private void ShowFrame()
         {
             _flow.KeepMirrorAfterCalibration = m_KeepMirrorAfterCalibration;
@@ -456,7 +502,7 @@ namespace AvatarGo
                 _hasMirror = true;
             }
             _display.UpdateMarkers(_frame, TrackingSpace, m_ShowDeviceMarkers && _flow.ShowsMarkers, _hasMirror, _mirror);
-            _display.UpdateText(_flow.Message, m_ShowInstructions, HeadSample(), TrackingSpace, Time.deltaTime);
+            _display.UpdateText(_refinement.Shown(_flow.Message), m_ShowInstructions, HeadSample(), TrackingSpace, Time.deltaTime);
         }
 
         // The HMD's sample: the device playing the head once identified, else the first HMD of the source.
@@ -484,10 +530,10 @@ namespace AvatarGo
                     AvatarGoAnimatorIKDriver ik = m_Animator.GetComponent<AvatarGoAnimatorIKDriver>();
                     if (ik == null) ik = m_Animator.gameObject.AddComponent<AvatarGoAnimatorIKDriver>();
                     if (ik.Calibrator == null) ik.Calibrator = this;
-                    // Unity's humanoid IK solves with the Avatar's own bone lengths; the fitted lengths are written to the
-                    // bones afterwards, which may pull the hands and feet off their goals (not confirmed in Unity yet).
-                    if (m_ScaleMode == CoreScaleMode.Fitted)
-                        Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: Scale Mode Fitted with the Animator IK driver: Unity's IK uses the Avatar's bind lengths, so the hands and feet may miss their goals by the fitted change. The Transforms driver applies the fitted solve exactly (calibrator.md).", this);
+                    // Unity's humanoid IK solves with the Avatar's own bone lengths; the fitted (or refined) lengths are written
+                    // to the bones afterwards, which may pull the hands and feet off their goals (not confirmed in Unity yet).
+                    if (m_ScaleMode == CoreScaleMode.Fitted || m_RefineAfterCalibration)
+                        Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: {(m_ScaleMode == CoreScaleMode.Fitted ? "Scale Mode Fitted" : "Refine After Calibration")} with the Animator IK driver: Unity's IK uses the Avatar's bind lengths, so the hands and feet may miss their goals by the change of the limbs' lengths. The Transforms driver applies the fitted or refined solve exactly (calibrator.md).", this);
                     break;
                 case DriverKind.AnimatorIK:
                 case DriverKind.Transforms:
@@ -505,6 +551,18 @@ namespace AvatarGo
             try
             {
                 e?.Invoke();
+            }
+            catch (Exception x)
+            {
+                Debug.LogException(x, this);
+            }
+        }
+
+        private void Raise(UnityEvent<bool> e, bool argument)
+        {
+            try
+            {
+                e?.Invoke(argument);
             }
             catch (Exception x)
             {

@@ -121,7 +121,10 @@ namespace AvatarGo.Core
         public float Tolerance { get; set; } = 0.01f;
 
         /// <summary>Fewest frames with a limb's target tracked for the limb to be refined (60: under a second at 90 Hz).</summary>
-        public int MinimumSamples { get; set; } = 60;
+        public int MinimumSamples { get; set; } = DefaultMinimumSamples;
+
+        /// <summary>The default of <see cref="MinimumSamples"/> (60 frames), the one the pipeline's refinement uses.</summary>
+        public const int DefaultMinimumSamples = 60;
 
         /// <summary>True between <see cref="Begin"/> and <see cref="Solve"/>.</summary>
         public bool IsRecording { get; private set; }

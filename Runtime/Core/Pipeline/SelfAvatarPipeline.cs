@@ -152,11 +152,13 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// Takes a saved calibration instead of calibrating, when the same devices are worn (matched by serial): solving
-        /// starts with the next frame. False, with nothing changed, when a device of the profile is not connected.
+        /// starts with the next frame (a refinement exercise being recorded is dropped). False, with nothing changed, when a
+        /// device of the profile is not connected.
         /// </summary>
         public bool TryRestore(CalibrationProfile profile)
         {
             if (!_calibrator.TryRestore(profile)) return false;
+            _refinement = null; // an exercise recorded on the previous avatar does not apply to the restored one
             Setup();
             return true;
         }
@@ -264,6 +266,17 @@ namespace AvatarGo.Core
             _calibrator.Refit(report.After);
             Setup();
             return report;
+        }
+
+        /// <summary>
+        /// Drops a refinement exercise without applying it (the recorded frames are forgotten; nothing changes). True when one
+        /// was being recorded.
+        /// </summary>
+        public bool CancelRefinement()
+        {
+            bool was = IsRefining;
+            _refinement = null;
+            return was;
         }
 
         /// <summary>

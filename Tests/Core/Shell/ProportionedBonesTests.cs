@@ -19,7 +19,7 @@ namespace AvatarGo.Core.Tests
 
         // Forward kinematics of the engine stand-in: the root where the pipeline put it, every other joint its transform's
         // local position (the managed ones from the bones, else the bind's) times the root's scale, and its solved rotation.
-        private static void EngineWorld(HumanoidMap avatar, SkeletonPose solved, ProportionedBones bones, bool applied, float rootScale, RigidPose[] world)
+        internal static void EngineWorld(HumanoidMap avatar, SkeletonPose solved, ProportionedBones bones, bool applied, float rootScale, RigidPose[] world)
         {
             Skeleton s = avatar.Skeleton;
             var position = new Vector3[s.JointCount];
