@@ -95,12 +95,13 @@ namespace AvatarGo.Core.Tests
         }
 
         // Issue 10's bounds, walk-in offsets for the hands, three seeds, where the clip allows them (solver.md): the
-        // MocapBank rig's shoulders are 3-4 cm off (its clavicles sit 11° below the T-pose's and never move), so only its
-        // end effectors and flips are held to them; Rigify's left knee bends backward in its data in the few frames it
-        // bends 15° or more, so its flips are left out.
+        // MocapBank rig's clavicles sit 11° below the T-pose's and never move, which the held shrugs make up for only in
+        // part (its elbows 42-57 mm median), and a third of it kneels (knees p95 150 mm), so its elbows and knees are not
+        // held to them; Rigify's left knee bends backward in its data in the few frames it bends 15° or more, so its flips
+        // are left out.
         [TestCase("mocapbank_30fps.bvh", false, true), TestCase("mixamo_fingers_30fps.bvh", true, true), TestCase("rigify_6channel_24fps.bvh", true, false)]
         [Category("Slow")]
-        public void TheIssuesBoundsHoldWhereTheClipAllows(string file, bool jointBounds, bool leftKneeFlips)
+        public void TheIssuesBoundsHoldWhereTheClipAllows(string file, bool midJointBounds, bool leftKneeFlips)
         {
             BvhClip clip = Read(TestData.SharedMocap(file));
             for (int seed = 1; seed <= 3; seed++)
@@ -111,8 +112,8 @@ namespace AvatarGo.Core.Tests
                 foreach (BendPlaneReport b in r.BendPlanes)
                     if (leftKneeFlips || b.Joint != HumanoidBone.LeftLowerLeg)
                         Assert.That(b.FlippedShare, Is.LessThanOrEqualTo(0.01), $"{file} seed {seed}: {b.Joint} flipped");
-                if (!jointBounds) continue;
                 Assert.That(r.AllJointsMm.Mean, Is.LessThanOrEqualTo(18.0), $"{file} seed {seed}: MPJPE (mm)");
+                if (!midJointBounds) continue;
                 Assert.That(r.MidJointMm.Median, Is.LessThanOrEqualTo(35.0), $"{file} seed {seed}: elbows and knees median (mm)");
                 Assert.That(r.MidJointMm.P95, Is.LessThanOrEqualTo(100.0), $"{file} seed {seed}: elbows and knees p95 (mm)");
             }
