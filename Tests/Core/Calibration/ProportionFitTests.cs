@@ -85,7 +85,10 @@ namespace AvatarGo.Core.Tests
                     $"{what}: fitted {joint} median within 5 mm of the wearer's own proportions (uniform: {uniform.JointPositionMm[joint].Median:0.0} mm)");
             TestContext.WriteLine($"{what} unreachable with the arm bent: own {own.UnreachedWhileBentFrames}, uniform {uniform.UnreachedWhileBentFrames}, fitted {fitted.UnreachedWhileBentFrames} of {fitted.Frames}");
             Assert.That(fitted.UnreachedWhileBentFrames, Is.LessThanOrEqualTo(uniform.UnreachedWhileBentFrames / 2), $"{what}: hands reach far more often");
-            Assert.That(fitted.UnreachedWhileBentFrames, Is.LessThanOrEqualTo(own.UnreachedWhileBentFrames + fitted.Frames / 50), $"{what}: as often as with the wearer's own arms");
+            // Issue 15: no frame with a hand out of reach while the wearer's own arm is bent (the held shrugs bring the
+            // shoulders where the hands reach; before them mocapbank had 141 such frames fitted and 142 with its own arms).
+            Assert.That(fitted.UnreachedWhileBentFrames, Is.EqualTo(0), $"{what}: no hand out of reach while the wearer's arm is bent");
+            Assert.That(own.UnreachedWhileBentFrames, Is.EqualTo(0), $"{what}: nor with the wearer's own arms");
         }
 
         internal static void AssertOwnProportionsUnchanged(string session, string what)
