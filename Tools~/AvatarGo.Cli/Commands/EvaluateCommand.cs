@@ -59,7 +59,7 @@ public sealed class EvaluateCommand : ICommand
                                changed, and why (the legs are reported, never refined). Not with the disturbances
                                or --positions / --bvh-out / --plot
           --exercise-seconds S the exercise's length (default 8; the session's, as simulated)
-        """ + EvaluationOutputs.Help + """
+        """ + "\n" + EvaluationOutputs.Help + "\n" + """
         Proportions: the wearer's true lengths (from the session's skeleton), the measured ones with their uncertainty,
         and the calibrated avatar's; the frames in which a hand could not reach its controller, and of those the ones
         in which the wearer's own arm was not fully stretched (under 98 % of its length).
@@ -193,6 +193,13 @@ public sealed class EvaluateCommand : ICommand
         };
     }
 
+    // A signed difference to one decimal: "+1.2", "-0.3", and "0.0" for what rounds to zero (whose sign would print as "-+0.0").
+    internal static string Signed(double value)
+    {
+        double rounded = Math.Round(value, 1) + 0.0; // + 0.0 turns -0.0 into 0.0
+        return rounded == 0.0 ? "0.0" : rounded.ToString("+0.0;-0.0", CultureInfo.InvariantCulture);
+    }
+
     internal static OffsetMode ParseMode(string mode) => mode switch
     {
         "exact" => OffsetMode.Exact,
@@ -236,7 +243,7 @@ public sealed class EvaluateCommand : ICommand
         o.WriteLine("limb         frames  residual before  after (mm)  length before  after (mm)  result");
         foreach (var (name, limb, leg) in RefinementLimbs(r))
             o.WriteLine(string.Create(inv,
-                $"  {name,-10} {limb.Samples,6} {limb.ResidualBefore * 1000,16:+0.0;-0.0} {limb.ResidualAfter * 1000,11:+0.0;-0.0} {limb.LengthBefore * 1000,14:0.0} {limb.LengthAfter * 1000,11:0.0}  {(limb.Refined ? "refined" : leg ? "kept (legs are not identifiable)" : "kept (within the tolerance or too few frames)")}"));
+                $"  {name,-10} {limb.Samples,6} {Signed(limb.ResidualBefore * 1000),16} {Signed(limb.ResidualAfter * 1000),11} {limb.LengthBefore * 1000,14:0.0} {limb.LengthAfter * 1000,11:0.0}  {(limb.Refined ? "refined" : leg ? "kept (legs are not identifiable)" : "kept (within the tolerance or too few frames)")}"));
         o.WriteLine("  " + r.Explanation);
     }
 
@@ -282,7 +289,7 @@ public sealed class EvaluateCommand : ICommand
         for (int i = 0; i < measured.Length; i++)
         {
             double tv = truth != null ? truth[i].value.Value * 100 : double.NaN, mv = measured[i].value.Value * 100, av = avatar[i].value.Value * 100;
-            o.WriteLine(string.Create(inv, $"  {measured[i].name,-18} {tv,7:0.0} {mv,8:0.0} {measured[i].value.Uncertainty * 100,5:0.0} {mv - tv,7:+0.0;-0.0} {av,8:0.0} {av - tv,7:+0.0;-0.0}"));
+            o.WriteLine(string.Create(inv, $"  {measured[i].name,-18} {tv,7:0.0} {mv,8:0.0} {measured[i].value.Uncertainty * 100,5:0.0} {Signed(mv - tv),7} {av,8:0.0} {Signed(av - tv),7}"));
         }
     }
 

@@ -30,8 +30,16 @@ public class ProgramTests
             var r = CliRunner.Run((command.Name + " --help").Split(' '));
             Assert.That(r.ExitCode, Is.EqualTo(0), command.Name);
             StringAssert.StartsWith("avatargo " + command.Name, r.Stdout, command.Name);
+            // Every option on a line of its own: help assembled from pieces once ran one option's text into the next
+            // ("(default 8; the session's, as simulated)  --positions OUT.csv").
+            foreach (string line in r.Stdout.Split('\n'))
+                Assert.That(System.Text.RegularExpressions.Regex.IsMatch(line, @"\S {2,}--[a-z]"), Is.False, $"{command.Name}: an option run into the line before it: '{line.TrimEnd()}'");
         }
     }
+
+    [TestCase(-0.04, "0.0"), TestCase(0.04, "0.0"), TestCase(0.26, "+0.3"), TestCase(-1.25, "-1.2"), TestCase(12.0, "+12.0")]
+    public void SignedDifferencesPrintZeroWithoutASign(double value, string printed) =>
+        Assert.That(AvatarGo.Cli.Commands.EvaluateCommand.Signed(value), Is.EqualTo(printed));
 
     [Test]
     public void UnknownOptionIsAUsageError()
