@@ -252,10 +252,11 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// Ends the refinement exercise and applies it: the arms' lengths refined from their reach, the avatar rebuilt with
-        /// them and the exact offsets computed again on it from the walk-in (<see cref="ScaledAvatar"/>, <see cref="Pose"/>,
-        /// <see cref="Profile"/> and the solver are new objects when anything changed; later swaps and re-measured devices
-        /// are undone, as by a new calibration). Returns the report with each limb's residual before and after, or null when
-        /// no exercise was started. Allocates.
+        /// them and the exact offsets computed again on it from the walk-in (<see cref="ScaledAvatar"/>, <see cref="Pose"/> and
+        /// the solver are new objects when anything changed; the calibration's <see cref="Profile"/> is the same object, its
+        /// proportions and offsets updated, so compare proportions by value, not the profile by reference; later swaps and
+        /// re-measured devices are undone, as by a new calibration). Returns the report with each limb's residual before and
+        /// after, or null when no exercise was started. Allocates.
         /// </summary>
         public RefinementReport EndRefinement()
         {
