@@ -167,8 +167,11 @@ namespace AvatarGo.Core
             if (targets.LeftFoot.IsActive) report.LeftFoot = TwoBoneIk.Solve(pose, _leftLeg, targets.LeftFoot.Goal, targets.LeftFoot.Hint);
             if (targets.RightFoot.IsActive) report.RightFoot = TwoBoneIk.Solve(pose, _rightLeg, targets.RightFoot.Goal, targets.RightFoot.Hint);
             float dt = deltaSeconds > 0f && deltaSeconds < float.PositiveInfinity && _shrugReleaseSeconds > 0f ? deltaSeconds : 0f;
+            // An inactive hand's arm keeps its pose, and its held shrug is released as time passes all the same.
             if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftClavicle, _leftClavicleReference, ref _leftShrugHeld, in targets.LeftHand, dt, _shrugReleaseSeconds);
+            else Release(ref _leftShrugHeld, dt, _shrugReleaseSeconds);
             if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightClavicle, _rightClavicleReference, ref _rightShrugHeld, in targets.RightHand, dt, _shrugReleaseSeconds);
+            else Release(ref _rightShrugHeld, dt, _shrugReleaseSeconds);
             pose.UpdateWorld();
             return report;
         }
@@ -264,8 +267,9 @@ namespace AvatarGo.Core
         {
             if (clavicle < 0) return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
             int parent = pose.Skeleton.GetParent(clavicle);
-            if (dt > 0f) held = Quaternion.Normalize(Quaternion.Slerp(held, Quaternion.Identity, 1f - MathF.Exp(-dt / releaseSeconds)));
-            pose.Local[clavicle] = pose.Local[clavicle].WithRotation(Quaternion.Normalize(held * clavicleReference));
+            Release(ref held, dt, releaseSeconds);
+            // A single-frame solve (dt 0) starts from the calibration pose's clavicle, whatever earlier frames held.
+            pose.Local[clavicle] = pose.Local[clavicle].WithRotation(dt > 0f ? Quaternion.Normalize(held * clavicleReference) : clavicleReference);
             pose.World[clavicle] = (parent < 0 ? pose.Origin : pose.World[parent]) * pose.Local[clavicle];
             LimbResult result = TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
             if (result.Reached || !(result.DistanceLeft > 1e-4f)) return result;
@@ -286,6 +290,11 @@ namespace AvatarGo.Core
                 if (heldAngle > MaxClavicleDegrees) held = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Identity, held, MaxClavicleDegrees / heldAngle));
             }
             return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
+        }
+
+        private static void Release(ref Quaternion held, float dt, float releaseSeconds)
+        {
+            if (dt > 0f) held = Quaternion.Normalize(Quaternion.Slerp(held, Quaternion.Identity, 1f - MathF.Exp(-dt / releaseSeconds)));
         }
 
         // The least turn of the clavicle about its pivot that brings the goal within reach of the stretched arm: the shoulder

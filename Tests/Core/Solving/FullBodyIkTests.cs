@@ -278,8 +278,8 @@ namespace AvatarGo.Core.Tests
         /// <summary>
         /// A shrug that reached the hand is held: with the hand then 10 cm within reach, the clavicle eases back to its
         /// reference with the time constant <see cref="FullBodyIk.DefaultShrugReleaseSeconds"/> (after 3 s, e^-1 of the
-        /// shrug is left), the same at 30 and 120 Hz. A single-frame solve holds nothing, a shrug that could not reach is
-        /// not held, and 0 s holds none.
+        /// shrug is left), the same at 30 and 120 Hz, and over the time a hand is lost. A single-frame solve holds nothing
+        /// and starts from nothing held, a shrug that could not reach is not held, and 0 s holds none.
         /// </summary>
         [Test]
         public void AShrugThatReachedIsHeldAndReleasedOverSeconds()
@@ -305,6 +305,22 @@ namespace AvatarGo.Core.Tests
             reachable.LeftHand.Goal = new RigidPose(targets1.LeftHand.Goal.Position + Vector3.UnitY * 0.1f, targets1.LeftHand.Goal.Rotation);
             ik1.Solve(in reachable, pose1, 1f / 90);
             Assert.That(ClavicleTurnDegrees(pose1, truth1), Is.LessThan(1e-3f), "a single-frame solve holds nothing");
+            ik1.Solve(in targets1, pose1, 1f / 90); // held now
+            ik1.Solve(in reachable, pose1);
+            Assert.That(ClavicleTurnDegrees(pose1, truth1), Is.LessThan(1e-3f), "nor starts from what other frames held");
+
+            // A hand lost for 3 s: its held shrug is released over that time too, not kept for its return.
+            var (ikLost, poseLost, targetsLost, truthLost) = HangingArm(0.02f);
+            ikLost.Solve(in targetsLost, poseLost, 1f / 90);
+            float held = ClavicleTurnDegrees(poseLost, truthLost);
+            BodyTargets lost = targetsLost;
+            lost.LeftHand.IsActive = false;
+            for (int i = 0; i < 270; i++) ikLost.Solve(in lost, poseLost, 1f / 90);
+            Assert.That(ClavicleTurnDegrees(poseLost, truthLost), Is.EqualTo(held).Within(1e-3f), "the lost hand's arm keeps its pose");
+            BodyTargets back = targetsLost;
+            back.LeftHand.Goal = new RigidPose(Vector3.Lerp(targetsLost.LeftHand.Goal.Position, poseLost.World[truthLost[HumanoidBone.LeftUpperArm]].Position, 0.25f), targetsLost.LeftHand.Goal.Rotation);
+            ikLost.Solve(in back, poseLost, 1f / 90);
+            Assert.That(ClavicleTurnDegrees(poseLost, truthLost) / held, Is.EqualTo((float)Math.Exp(-271.0 / 270)).Within(0.01f), "released over the 3 s it was lost");
 
             var (ik2, pose2, targets2, truth2) = HangingArm(0.40f);
             ik2.Solve(in targets2, pose2, 1f / 90);
