@@ -65,6 +65,10 @@ namespace AvatarGo
             "applied at run time by moving its knee, ankle, elbow and wrist bones along their bones (skinned meshes stretch around those joints; see calibration.md). Read when the pipeline is made.")]
         private CoreScaleMode m_ScaleMode = CoreScaleMode.Uniform;
 
+        [SerializeField, Range(0f, 10f), Tooltip("How slowly (s) a shoulder lets go of the shrug its hand needed to reach the controller: held, it keeps shoulders that sit lower or " +
+            "further forward than in the T-pose where they are (solver.md, the held shrug). 0: none held. Read when the pipeline is made.")]
+        private float m_ShrugReleaseSeconds = 3f; // FullBodyIk.DefaultShrugReleaseSeconds (the prefab generator reads literals only)
+
         [SerializeField, Tooltip("On start, reuse the calibration saved for this avatar when the same devices (by serial) are connected.")]
         private bool m_RestoreSavedProfile = true;
 
@@ -150,6 +154,9 @@ namespace AvatarGo
         /// proportions it was measured with.
         /// </summary>
         public CoreScaleMode AvatarScaleMode { get => m_ScaleMode; set => m_ScaleMode = value; }
+
+        /// <summary>How slowly a shoulder releases a held shrug (s, 0…10; 0 holds none; <c>PipelineSettings.ShrugReleaseSeconds</c>); read when the pipeline is made.</summary>
+        public float ShrugReleaseSeconds { get => m_ShrugReleaseSeconds; set => m_ShrugReleaseSeconds = value >= 0f && value <= 10f ? value : FullBodyIk.DefaultShrugReleaseSeconds; }
 
         /// <summary>Whether each new calibration is followed by the refinement exercise (<see cref="Refinement"/>); read when a calibration completes.</summary>
         public bool RefinesAfterCalibration { get => m_RefineAfterCalibration; set => m_RefineAfterCalibration = value; }
@@ -424,6 +431,7 @@ namespace AvatarGo
             SelfAvatarPipeline old = _pipeline;
             AnnounceRefinement(_refinement.Cancel(old)); // an exercise recorded on the old pipeline is dropped
             var settings = new PipelineSettings { Offsets = m_Offsets };
+            settings.ShrugReleaseSeconds = m_ShrugReleaseSeconds >= 0f && m_ShrugReleaseSeconds <= 10f ? m_ShrugReleaseSeconds : FullBodyIk.DefaultShrugReleaseSeconds;
             settings.Calibration.Proportions.Mode = m_ScaleMode;
             if (_fingers != null) _fingers.ConfigureHands(settings);
             try
