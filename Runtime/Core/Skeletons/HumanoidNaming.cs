@@ -10,8 +10,12 @@ namespace AvatarGo.Core
     /// <c>LeftToe</c>, <c>Spine1</c>), CMU/MocapBank (<c>Chest</c>, <c>LeftCollar</c>, <c>LeftShoulder</c> = upper
     /// arm, <c>LeftElbow</c>, <c>LeftWrist</c>, <c>LeftHip</c>, <c>LeftKnee</c>, <c>LeftAnkle</c>), Rigify
     /// (<c>pelvis</c>, <c>spine.001</c>, <c>upper_arm.L</c>, <c>thigh.L</c>, <c>shin.L</c>, <c>f_index.01.L</c>), Unreal
-    /// (<c>thigh_l</c>, <c>calf_l</c>, <c>upperarm_l</c>, <c>neck_01</c>, <c>index_01_l</c>) and
-    /// Unity-style names (<c>LeftUpperArm</c>, <c>LeftLowerLeg</c>). Explicit overrides win.
+    /// (<c>thigh_l</c>, <c>calf_l</c>, <c>upperarm_l</c>, <c>neck_01</c>, <c>index_01_l</c>), Unity-style names
+    /// (<c>LeftUpperArm</c>, <c>LeftLowerLeg</c>; Xsens MVN's <c>T8</c>, <c>LeftForeArm</c>; Bandai Namco's <c>UpperArm_L</c>),
+    /// SMPL (<c>L_Collar</c>, <c>L_Shoulder</c> = upper arm, <c>L_Elbow</c>, <c>L_Knee</c>), VRoid/VRM
+    /// (<c>J_Bip_C_Hips</c>, <c>J_Bip_L_UpperArm</c>), 3ds Max Biped (<c>Bip01_L_Clavicle</c>, <c>Bip01_L_Calf</c>) and Daz
+    /// Genesis (<c>hip</c>, <c>lShldrBend</c>, <c>lForearmBend</c>, <c>lThighBend</c>, <c>lShin</c>, <c>neckLower</c>).
+    /// Explicit overrides win.
     /// </summary>
     /// <remarks>
     /// Rules worth knowing: <c>Shoulder</c> is the clavicle when the same side also has an <c>Arm</c>/<c>UpperArm</c>
@@ -58,8 +62,9 @@ namespace AvatarGo.Core
                 used.Add(joint);
             }
 
-            // Hips: an unsided hips/pelvis joint, else the first root with children.
-            int hips = Find(skeleton, cores, sides, Side.None, -1, "hips", "pelvis", "hip");
+            // Hips: the unsided hips/pelvis joint nearest the root (Daz has a "hip" above its "pelvis", the legs under the
+            // one and the spine under the other), else the first root with children.
+            int hips = Shallowest(skeleton, cores, sides, "hips", "pelvis", "hip");
             if (hips < 0) hips = 0;
             Put(HumanoidBone.Hips, hips);
             hips = bones.TryGetValue(HumanoidBone.Hips, out int h) ? h : hips;
@@ -70,8 +75,12 @@ namespace AvatarGo.Core
                 // Legs.
                 int upLeg = Find(skeleton, cores, sides, side, hips, "upleg", "upperleg", "thigh", "hip", "femur");
                 int lowLeg = Find(skeleton, cores, sides, side, upLeg, "leg", "lowerleg", "shin", "knee", "calf", "tibia");
+                // An "ankle" above a "foot" (SMPL: L_Ankle, then L_Foot at the toes) is the foot bone, and the "foot" its toes.
                 int foot = Find(skeleton, cores, sides, side, lowLeg, "foot", "ankle");
-                int toes = Find(skeleton, cores, sides, side, foot, "toebase", "toe", "toes", "ball");
+                int ankle = Find(skeleton, cores, sides, side, lowLeg, "ankle");
+                int toes = -1;
+                if (ankle >= 0 && foot >= 0 && foot != ankle && skeleton.IsAncestorOrSelf(ankle, foot)) { toes = foot; foot = ankle; }
+                if (toes < 0) toes = Find(skeleton, cores, sides, side, foot, "toebase", "toe", "toes", "ball", "toe0");
                 if (foot < 0) foot = EndSiteOf(skeleton, lowLeg);
                 Put(left ? HumanoidBone.LeftUpperLeg : HumanoidBone.RightUpperLeg, upLeg);
                 Put(left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg, lowLeg);
@@ -85,9 +94,12 @@ namespace AvatarGo.Core
                     : Find(skeleton, cores, sides, side, hips, "clavicle", "collar");
                 int upArm = hasArm
                     ? Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "arm", "upperarm", "uparm")
-                    : Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "shoulder", "humerus");
+                    : Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "shoulder", "humerus", "shldr");
                 int foreArm = Find(skeleton, cores, sides, side, upArm, "forearm", "lowerarm", "elbow", "radius");
+                // A "wrist" above a "hand" (SMPL: L_Wrist, then L_Hand at the knuckles) is the hand bone.
                 int hand = Find(skeleton, cores, sides, side, foreArm, "hand", "wrist");
+                int wrist = Find(skeleton, cores, sides, side, foreArm, "wrist");
+                if (wrist >= 0 && hand >= 0 && hand != wrist && skeleton.IsAncestorOrSelf(wrist, hand)) hand = wrist;
                 if (hand < 0) hand = EndSiteOf(skeleton, foreArm);
                 Put(left ? HumanoidBone.LeftShoulder : HumanoidBone.RightShoulder, clavicle);
                 Put(left ? HumanoidBone.LeftUpperArm : HumanoidBone.RightUpperArm, upArm);
@@ -119,7 +131,7 @@ namespace AvatarGo.Core
             }
 
             // Neck and head.
-            int neck = Find(skeleton, cores, sides, Side.None, hips, "neck", "neck1", "neck01");
+            int neck = Find(skeleton, cores, sides, Side.None, hips, "neck", "neck1", "neck01", "necklower");
             int head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "head");
             if (head < 0) head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "face");
             if (head < 0 && neck >= 0) head = EndSiteOf(skeleton, neck);
@@ -177,6 +189,21 @@ namespace AvatarGo.Core
             return -1;
         }
 
+        // The unsided joint whose core name is one of the keys with the fewest ancestors (the first in hierarchy order among
+        // equals), or -1.
+        private static int Shallowest(Skeleton s, string[] cores, Side[] sides, params string[] keys)
+        {
+            int best = -1, bestDepth = int.MaxValue;
+            for (int j = 0; j < cores.Length; j++)
+            {
+                if (sides[j] != Side.None || s.IsEndSite(j) || Array.IndexOf(keys, cores[j]) < 0) continue;
+                int depth = 0;
+                for (int p = s.GetParent(j); p >= 0; p = s.GetParent(p)) depth++;
+                if (depth < bestDepth) { best = j; bestDepth = depth; }
+            }
+            return best;
+        }
+
         private static int FindAnywhere(string[] cores, Side[] sides, Side side, params string[] keys)
         {
             foreach (string key in keys)
@@ -201,15 +228,20 @@ namespace AvatarGo.Core
             return -1;
         }
 
-        // Strips a namespace ("mixamorig:"), finds the side (Left/Right prefix, L_/R_ prefix, .L/_L/.R/_R suffix)
-        // and reduces the rest to lower-case letters and digits.
+        // Strips a namespace ("mixamorig:"), finds the side (Left/Right prefix, L_/R_ prefix, .L/_L/.R/_R suffix, Daz's
+        // lowercase l/r before a capital, or an L/R/C token after a rig prefix: VRoid's J_Bip_L_UpperArm, 3ds Max Biped's
+        // Bip01_L_Thigh), drops a Biped "Bip01" prefix and Daz's "Bend" suffix, and reduces the rest to lower-case letters
+        // and digits.
         private static void Normalise(string name, out Side side, out string core)
         {
             int colon = name.LastIndexOf(':');
             string s = colon >= 0 ? name.Substring(colon + 1) : name;
             string lower = s.ToLowerInvariant();
             side = Side.None;
-            if (lower.StartsWith("left", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(4); }
+            // Daz: a lowercase l or r before a capitalised word (lShldrBend, rThighBend).
+            if (s.Length >= 3 && (s[0] == 'l' || s[0] == 'r') && char.IsUpper(s[1]) && char.IsLower(s[2])) { side = s[0] == 'l' ? Side.Left : Side.Right; lower = lower.Substring(1); }
+            else if (SideToken(lower, out Side tokenSide, out string rest)) { side = tokenSide; lower = rest; }
+            else if (lower.StartsWith("left", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(4); }
             else if (lower.StartsWith("right", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(5); }
             else if (lower.StartsWith("l_", StringComparison.Ordinal) || lower.StartsWith("l.", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(2); }
             else if (lower.StartsWith("r_", StringComparison.Ordinal) || lower.StartsWith("r.", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(2); }
@@ -219,6 +251,42 @@ namespace AvatarGo.Core
             foreach (char c in lower)
                 if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) chars.Append(c);
             core = chars.ToString();
+            if (core.Length > 4 && core.EndsWith("bend", StringComparison.Ordinal)) core = core.Substring(0, core.Length - 4);
+        }
+
+        private static readonly char[] Separators = { '_', ' ', '.', '-' };
+
+        // A side token after a rig prefix ("j_bip_l_upperarm", "bip01_l_thigh"; "c" marks the centre), or a Biped prefix
+        // alone ("bip01_pelvis"): true with the side and the name after the token. A first token "l"/"r" is left to the
+        // L_/R_ rule, a last one to the _L/_R rule.
+        private static bool SideToken(string lower, out Side side, out string rest)
+        {
+            side = Side.None;
+            rest = lower;
+            string[] tokens = lower.Split(Separators, StringSplitOptions.RemoveEmptyEntries);
+            for (int i = 1; i < tokens.Length - 1; i++)
+            {
+                string t = tokens[i];
+                if (t != "l" && t != "r" && t != "c") continue;
+                side = t == "l" ? Side.Left : t == "r" ? Side.Right : Side.None;
+                rest = string.Join("_", tokens, i + 1, tokens.Length - i - 1);
+                return true;
+            }
+            if (tokens.Length > 1 && IsBipedPrefix(tokens[0]))
+            {
+                rest = string.Join("_", tokens, 1, tokens.Length - 1);
+                return true;
+            }
+            return false;
+        }
+
+        // "bip", "bip01", "bip001": 3ds Max Biped's root name, which its bones' names start with.
+        private static bool IsBipedPrefix(string token)
+        {
+            if (!token.StartsWith("bip", StringComparison.Ordinal)) return false;
+            for (int i = 3; i < token.Length; i++)
+                if (token[i] < '0' || token[i] > '9') return false;
+            return true;
         }
     }
 }

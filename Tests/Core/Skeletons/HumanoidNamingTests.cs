@@ -195,5 +195,88 @@ namespace AvatarGo.Core.Tests
             Assert.That(map.MissingRequired(), Is.Empty);
             Expect(map, "Neck=neck_01", "UpperChest=spine_03", "LeftShoulder=clavicle_l", "LeftIndexProximal=index_01_l", "LeftToes=ball_l");
         }
+
+        [Test]
+        public void VRoidNames()
+        {
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                "Root", "J_Bip_C_Hips<Root", "J_Bip_C_Spine<J_Bip_C_Hips", "J_Bip_C_Chest<J_Bip_C_Spine", "J_Bip_C_UpperChest<J_Bip_C_Chest",
+                "J_Bip_C_Neck<J_Bip_C_UpperChest", "J_Bip_C_Head<J_Bip_C_Neck", "J_Adj_L_FaceEye<J_Bip_C_Head", "J_Sec_Hair1_01<J_Bip_C_Head",
+                "J_Bip_L_Shoulder<J_Bip_C_UpperChest", "J_Bip_L_UpperArm<J_Bip_L_Shoulder", "J_Bip_L_LowerArm<J_Bip_L_UpperArm", "J_Bip_L_Hand<J_Bip_L_LowerArm",
+                "J_Bip_L_Index1<J_Bip_L_Hand", "J_Bip_L_Index2<J_Bip_L_Index1", "J_Bip_L_Thumb1<J_Bip_L_Hand",
+                "J_Bip_R_Shoulder<J_Bip_C_UpperChest", "J_Bip_R_UpperArm<J_Bip_R_Shoulder", "J_Bip_R_LowerArm<J_Bip_R_UpperArm", "J_Bip_R_Hand<J_Bip_R_LowerArm",
+                "J_Bip_L_UpperLeg<J_Bip_C_Hips", "J_Bip_L_LowerLeg<J_Bip_L_UpperLeg", "J_Bip_L_Foot<J_Bip_L_LowerLeg", "J_Bip_L_ToeBase<J_Bip_L_Foot",
+                "J_Bip_R_UpperLeg<J_Bip_C_Hips", "J_Bip_R_LowerLeg<J_Bip_R_UpperLeg", "J_Bip_R_Foot<J_Bip_R_LowerLeg"));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Expect(map, "Hips=J_Bip_C_Hips", "Spine=J_Bip_C_Spine", "Chest=J_Bip_C_Chest", "UpperChest=J_Bip_C_UpperChest", "Neck=J_Bip_C_Neck",
+                "Head=J_Bip_C_Head", "LeftShoulder=J_Bip_L_Shoulder", "LeftUpperArm=J_Bip_L_UpperArm", "LeftLowerArm=J_Bip_L_LowerArm",
+                "LeftHand=J_Bip_L_Hand", "LeftIndexProximal=J_Bip_L_Index1", "LeftIndexIntermediate=J_Bip_L_Index2", "LeftThumbProximal=J_Bip_L_Thumb1",
+                "RightUpperLeg=J_Bip_R_UpperLeg", "RightLowerLeg=J_Bip_R_LowerLeg", "LeftToes=J_Bip_L_ToeBase");
+        }
+
+        [Test]
+        public void BipedNames()
+        {
+            // 3ds Max Biped as BVH exporters write it (spaces become underscores); its thighs hang from the pelvis.
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                "Bip01", "Bip01_Pelvis<Bip01", "Bip01_Spine<Bip01_Pelvis", "Bip01_Spine1<Bip01_Spine", "Bip01_Neck<Bip01_Spine1", "Bip01_Head<Bip01_Neck",
+                "Bip01_L_Clavicle<Bip01_Neck", "Bip01_L_UpperArm<Bip01_L_Clavicle", "Bip01_L_Forearm<Bip01_L_UpperArm", "Bip01_L_Hand<Bip01_L_Forearm",
+                "Bip01_R_Clavicle<Bip01_Neck", "Bip01_R_UpperArm<Bip01_R_Clavicle", "Bip01_R_Forearm<Bip01_R_UpperArm", "Bip01_R_Hand<Bip01_R_Forearm",
+                "Bip01_L_Thigh<Bip01_Pelvis", "Bip01_L_Calf<Bip01_L_Thigh", "Bip01_L_Foot<Bip01_L_Calf", "Bip01_L_Toe0<Bip01_L_Foot",
+                "Bip01_R_Thigh<Bip01_Pelvis", "Bip01_R_Calf<Bip01_R_Thigh", "Bip01_R_Foot<Bip01_R_Calf"));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Expect(map, "Hips=Bip01_Pelvis", "Spine=Bip01_Spine", "Chest=Bip01_Spine1", "Neck=Bip01_Neck", "Head=Bip01_Head",
+                "LeftShoulder=Bip01_L_Clavicle", "LeftUpperArm=Bip01_L_UpperArm", "LeftLowerArm=Bip01_L_Forearm", "RightHand=Bip01_R_Hand",
+                "LeftUpperLeg=Bip01_L_Thigh", "LeftLowerLeg=Bip01_L_Calf", "LeftFoot=Bip01_L_Foot", "LeftToes=Bip01_L_Toe0");
+        }
+
+        [Test]
+        public void DazGenesisNames()
+        {
+            // Genesis 8: "hip" above "pelvis" (the legs under it, the spine beside it), bend and twist bones along each limb.
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                "hip", "pelvis<hip", "abdomenLower<hip", "abdomenUpper<abdomenLower", "chestLower<abdomenUpper", "chestUpper<chestLower",
+                "neckLower<chestUpper", "neckUpper<neckLower", "head<neckUpper",
+                "lCollar<chestUpper", "lShldrBend<lCollar", "lShldrTwist<lShldrBend", "lForearmBend<lShldrTwist", "lForearmTwist<lForearmBend", "lHand<lForearmTwist",
+                "rCollar<chestUpper", "rShldrBend<rCollar", "rShldrTwist<rShldrBend", "rForearmBend<rShldrTwist", "rForearmTwist<rForearmBend", "rHand<rForearmTwist",
+                "lThighBend<pelvis", "lThighTwist<lThighBend", "lShin<lThighTwist", "lFoot<lShin", "lMetatarsals<lFoot", "lToe<lMetatarsals",
+                "rThighBend<pelvis", "rThighTwist<rThighBend", "rShin<rThighTwist", "rFoot<rShin"));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Expect(map, "Hips=hip", "Spine=abdomenLower", "Chest=abdomenUpper", "UpperChest=chestUpper", "Neck=neckLower", "Head=head",
+                "LeftShoulder=lCollar", "LeftUpperArm=lShldrBend", "LeftLowerArm=lForearmBend", "LeftHand=lHand", "RightUpperArm=rShldrBend",
+                "LeftUpperLeg=lThighBend", "LeftLowerLeg=lShin", "LeftFoot=lFoot", "LeftToes=lToe", "RightLowerLeg=rShin");
+        }
+
+        [Test]
+        public void SmplXsensAndBandaiNames()
+        {
+            HumanoidMap smpl = HumanoidNaming.Detect(Build(
+                "Pelvis", "L_Hip<Pelvis", "L_Knee<L_Hip", "L_Ankle<L_Knee", "L_Foot<L_Ankle", "R_Hip<Pelvis", "R_Knee<R_Hip", "R_Ankle<R_Knee",
+                "Spine1<Pelvis", "Spine2<Spine1", "Spine3<Spine2", "Neck<Spine3", "Head<Neck",
+                "L_Collar<Spine3", "L_Shoulder<L_Collar", "L_Elbow<L_Shoulder", "L_Wrist<L_Elbow", "L_Hand<L_Wrist",
+                "R_Collar<Spine3", "R_Shoulder<R_Collar", "R_Elbow<R_Shoulder", "R_Wrist<R_Elbow"));
+            Assert.That(smpl.MissingRequired(), Is.Empty);
+            // SMPL's L_Foot is the toes' joint, below the ankle; its L_Hand is the knuckles', below the wrist.
+            Expect(smpl, "Hips=Pelvis", "LeftUpperLeg=L_Hip", "LeftLowerLeg=L_Knee", "LeftFoot=L_Ankle", "LeftShoulder=L_Collar",
+                "LeftUpperArm=L_Shoulder", "LeftLowerArm=L_Elbow", "LeftHand=L_Wrist", "UpperChest=Spine3");
+
+            HumanoidMap xsens = HumanoidNaming.Detect(Build(
+                "Pelvis", "L5<Pelvis", "L3<L5", "T12<L3", "T8<T12", "Neck<T8", "Head<Neck",
+                "RightShoulder<T8", "RightUpperArm<RightShoulder", "RightForeArm<RightUpperArm", "RightHand<RightForeArm",
+                "LeftShoulder<T8", "LeftUpperArm<LeftShoulder", "LeftForeArm<LeftUpperArm", "LeftHand<LeftForeArm",
+                "RightUpperLeg<Pelvis", "RightLowerLeg<RightUpperLeg", "RightFoot<RightLowerLeg", "RightToe<RightFoot",
+                "LeftUpperLeg<Pelvis", "LeftLowerLeg<LeftUpperLeg", "LeftFoot<LeftLowerLeg", "LeftToe<LeftFoot"));
+            Assert.That(xsens.MissingRequired(), Is.Empty);
+            Expect(xsens, "Hips=Pelvis", "Spine=L5", "Chest=L3", "UpperChest=T8", "LeftShoulder=LeftShoulder", "LeftUpperArm=LeftUpperArm", "LeftToes=LeftToe");
+
+            HumanoidMap bandai = HumanoidNaming.Detect(Build(
+                "Hips", "Spine<Hips", "Chest<Spine", "Neck<Chest", "Head<Neck",
+                "Shoulder_L<Chest", "UpperArm_L<Shoulder_L", "LowerArm_L<UpperArm_L", "Hand_L<LowerArm_L",
+                "Shoulder_R<Chest", "UpperArm_R<Shoulder_R", "LowerArm_R<UpperArm_R", "Hand_R<LowerArm_R",
+                "UpperLeg_L<Hips", "LowerLeg_L<UpperLeg_L", "Foot_L<LowerLeg_L", "Toes_L<Foot_L",
+                "UpperLeg_R<Hips", "LowerLeg_R<UpperLeg_R", "Foot_R<LowerLeg_R"));
+            Assert.That(bandai.MissingRequired(), Is.Empty);
+            Expect(bandai, "LeftShoulder=Shoulder_L", "LeftUpperArm=UpperArm_L", "RightLowerArm=LowerArm_R", "LeftToes=Toes_L");
+        }
     }
 }

@@ -1,0 +1,69 @@
+using System.Collections.Generic;
+using System.IO;
+using System.Text.RegularExpressions;
+using AvatarGo.Simulation;
+using NUnit.Framework;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// The same motion under the joint names of other skeleton families: the MocapBank clip with every joint renamed as
+    /// SMPL, Xsens MVN, Bandai Namco, Daz Genesis, 3ds Max Biped (as BVH writes it), VRoid/VRM and Unreal name them. The
+    /// names find the same humanoid bones (<see cref="HumanoidNaming"/>), so calibration succeeds and every figure is the
+    /// original's: a family the names miss would not calibrate at all.
+    /// </summary>
+    public class NamingFamilyTests
+    {
+        private static readonly string[] Joints =
+        {
+            "Hips", "Chest", "Chest2", "LeftCollar", "LeftShoulder", "LeftElbow", "LeftWrist", "RightCollar", "RightShoulder", "RightElbow",
+            "RightWrist", "Neck", "Head", "LeftHip", "LeftKnee", "LeftAnkle", "RightHip", "RightKnee", "RightAnkle",
+        };
+
+        // Each family's names for the joints above, in that order.
+        private static readonly Dictionary<string, string[]> Families = new Dictionary<string, string[]>
+        {
+            ["smpl"] = new[] { "Pelvis", "Spine1", "Spine3", "L_Collar", "L_Shoulder", "L_Elbow", "L_Wrist", "R_Collar", "R_Shoulder", "R_Elbow", "R_Wrist", "Neck", "Head", "L_Hip", "L_Knee", "L_Ankle", "R_Hip", "R_Knee", "R_Ankle" },
+            ["xsens"] = new[] { "Pelvis", "T12", "T8", "LeftShoulder", "LeftUpperArm", "LeftForeArm", "LeftHand", "RightShoulder", "RightUpperArm", "RightForeArm", "RightHand", "Neck", "Head", "LeftUpperLeg", "LeftLowerLeg", "LeftFoot", "RightUpperLeg", "RightLowerLeg", "RightFoot" },
+            ["bandai"] = new[] { "Hips", "Spine", "Chest", "Shoulder_L", "UpperArm_L", "LowerArm_L", "Hand_L", "Shoulder_R", "UpperArm_R", "LowerArm_R", "Hand_R", "Neck", "Head", "UpperLeg_L", "LowerLeg_L", "Foot_L", "UpperLeg_R", "LowerLeg_R", "Foot_R" },
+            ["daz"] = new[] { "hip", "abdomenLower", "chestUpper", "lCollar", "lShldrBend", "lForearmBend", "lHand", "rCollar", "rShldrBend", "rForearmBend", "rHand", "neckLower", "head", "lThighBend", "lShin", "lFoot", "rThighBend", "rShin", "rFoot" },
+            ["biped"] = new[] { "Bip01_Pelvis", "Bip01_Spine", "Bip01_Spine1", "Bip01_L_Clavicle", "Bip01_L_UpperArm", "Bip01_L_Forearm", "Bip01_L_Hand", "Bip01_R_Clavicle", "Bip01_R_UpperArm", "Bip01_R_Forearm", "Bip01_R_Hand", "Bip01_Neck", "Bip01_Head", "Bip01_L_Thigh", "Bip01_L_Calf", "Bip01_L_Foot", "Bip01_R_Thigh", "Bip01_R_Calf", "Bip01_R_Foot" },
+            ["vroid"] = new[] { "J_Bip_C_Hips", "J_Bip_C_Spine", "J_Bip_C_Chest", "J_Bip_L_Shoulder", "J_Bip_L_UpperArm", "J_Bip_L_LowerArm", "J_Bip_L_Hand", "J_Bip_R_Shoulder", "J_Bip_R_UpperArm", "J_Bip_R_LowerArm", "J_Bip_R_Hand", "J_Bip_C_Neck", "J_Bip_C_Head", "J_Bip_L_UpperLeg", "J_Bip_L_LowerLeg", "J_Bip_L_Foot", "J_Bip_R_UpperLeg", "J_Bip_R_LowerLeg", "J_Bip_R_Foot" },
+            ["unreal"] = new[] { "pelvis", "spine_01", "spine_02", "clavicle_l", "upperarm_l", "lowerarm_l", "hand_l", "clavicle_r", "upperarm_r", "lowerarm_r", "hand_r", "neck_01", "head", "thigh_l", "calf_l", "foot_l", "thigh_r", "calf_r", "foot_r" },
+        };
+
+        private static BvhClip Renamed(string text, string[] names)
+        {
+            var rename = new Dictionary<string, string>();
+            for (int i = 0; i < Joints.Length; i++) rename[Joints[i]] = names[i];
+            string renamed = Regex.Replace(text, @"^(\s*(?:ROOT|JOINT)\s+)(\S+)", m => m.Groups[1].Value + (rename.TryGetValue(m.Groups[2].Value, out string n) ? n : m.Groups[2].Value), RegexOptions.Multiline);
+            return BvhReader.Read(new StringReader(renamed), "renamed", new BvhReadOptions { ToMetres = true });
+        }
+
+        private static EvaluationReport Evaluate(BvhClip clip)
+        {
+            var simulator = new SessionSimulator(clip, new SimulationOptions { Seed = 2 });
+            var text = new StringWriter();
+            using (var writer = new SessionWriter(text, simulator.CreateHeader())) simulator.Run(writer);
+            using var reader = new SessionReader(new StringReader(text.ToString()), clip.Skeleton.GetName(0));
+            return SessionEvaluator.Evaluate(reader, new PipelineSettings());
+        }
+
+        [TestCase("smpl"), TestCase("xsens"), TestCase("bandai"), TestCase("daz"), TestCase("biped"), TestCase("vroid"), TestCase("unreal")]
+        public void AnotherFamilysNamesGiveTheSameAvatar(string family)
+        {
+            string text = File.ReadAllText(TestData.Mocap("mocapbank_30fps.bvh"));
+            BvhClip original = BvhReader.Read(new StringReader(text), "original", new BvhReadOptions { ToMetres = true });
+            BvhClip renamed = Renamed(text, Families[family]);
+            HumanoidMap a = HumanoidNaming.Detect(original.Skeleton), b = HumanoidNaming.Detect(renamed.Skeleton);
+            Assert.That(b.MissingRequired(), Is.Empty, family);
+            for (int bone = 0; bone < HumanoidBones.Count; bone++)
+                Assert.That(b[(HumanoidBone)bone], Is.EqualTo(a[(HumanoidBone)bone]), $"{family}: {(HumanoidBone)bone} is the same joint");
+            EvaluationReport own = Evaluate(original), other = Evaluate(renamed);
+            Assert.That(other.Profile, Is.Not.Null, $"{family}: {other.CalibrationMessage}");
+            Assert.That(other.Frames, Is.EqualTo(own.Frames));
+            Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(0.01), $"{family}: MPJPE (mm)");
+            Assert.That(other.MidJointMm.Median, Is.EqualTo(own.MidJointMm.Median).Within(0.01), $"{family}: elbows and knees median (mm)");
+        }
+    }
+}
