@@ -155,8 +155,8 @@ namespace AvatarGo
         /// </summary>
         public CoreScaleMode AvatarScaleMode { get => m_ScaleMode; set => m_ScaleMode = value; }
 
-        /// <summary>How slowly a shoulder releases a held shrug (s, 0…10; 0 holds none; <c>PipelineSettings.ShrugReleaseSeconds</c>); read when the pipeline is made.</summary>
-        public float ShrugReleaseSeconds { get => m_ShrugReleaseSeconds; set => m_ShrugReleaseSeconds = value >= 0f && value <= 10f ? value : FullBodyIk.DefaultShrugReleaseSeconds; }
+        /// <summary>How slowly a shoulder releases a held shrug (s, clamped to 0…10, NaN gives the default 3; 0 holds none; <c>PipelineSettings.ShrugReleaseSeconds</c>); read when the pipeline is made.</summary>
+        public float ShrugReleaseSeconds { get => m_ShrugReleaseSeconds; set => m_ShrugReleaseSeconds = float.IsNaN(value) ? FullBodyIk.DefaultShrugReleaseSeconds : Math.Min(10f, Math.Max(0f, value)); }
 
         /// <summary>Whether each new calibration is followed by the refinement exercise (<see cref="Refinement"/>); read when a calibration completes.</summary>
         public bool RefinesAfterCalibration { get => m_RefineAfterCalibration; set => m_RefineAfterCalibration = value; }

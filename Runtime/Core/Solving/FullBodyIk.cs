@@ -129,14 +129,17 @@ namespace AvatarGo.Core
         /// single frame: no shrug is held from earlier frames or kept for later ones. On return
         /// <see cref="SkeletonPose.World"/> is up to date.
         /// </summary>
-        public IkReport Solve(in BodyTargets targets, SkeletonPose pose) => Solve(in targets, pose, 0f);
+        public IkReport Solve(in BodyTargets targets, SkeletonPose pose) => Solve(in targets, pose, 0f, false);
 
         /// <summary>
         /// Poses <paramref name="pose"/> as the frame <paramref name="deltaSeconds"/> after the previous one: the clavicles
-        /// start from the shrug held from earlier frames (<see cref="ShrugReleaseSeconds"/>);
-        /// 0 solves the frame on its own and changes nothing held. Allocates nothing.
+        /// start from the shrug held from earlier frames, released by that much time (<see cref="ShrugReleaseSeconds"/>),
+        /// and keep the one this frame needs. 0 (or a time that is not finite and positive: a repeated or paused frame)
+        /// releases nothing. Allocates nothing.
         /// </summary>
-        public IkReport Solve(in BodyTargets targets, SkeletonPose pose, float deltaSeconds)
+        public IkReport Solve(in BodyTargets targets, SkeletonPose pose, float deltaSeconds) => Solve(in targets, pose, deltaSeconds, _shrugReleaseSeconds > 0f);
+
+        private IkReport Solve(in BodyTargets targets, SkeletonPose pose, float deltaSeconds, bool holdShrugs)
         {
             if (pose == null) throw new ArgumentNullException(nameof(pose));
             var report = new IkReport();
@@ -166,12 +169,16 @@ namespace AvatarGo.Core
 
             if (targets.LeftFoot.IsActive) report.LeftFoot = TwoBoneIk.Solve(pose, _leftLeg, targets.LeftFoot.Goal, targets.LeftFoot.Hint);
             if (targets.RightFoot.IsActive) report.RightFoot = TwoBoneIk.Solve(pose, _rightLeg, targets.RightFoot.Goal, targets.RightFoot.Hint);
-            float dt = deltaSeconds > 0f && deltaSeconds < float.PositiveInfinity && _shrugReleaseSeconds > 0f ? deltaSeconds : 0f;
-            // An inactive hand's arm keeps its pose, and its held shrug is released as time passes all the same.
-            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftClavicle, _leftClavicleReference, ref _leftShrugHeld, in targets.LeftHand, dt, _shrugReleaseSeconds);
-            else Release(ref _leftShrugHeld, dt, _shrugReleaseSeconds);
-            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightClavicle, _rightClavicleReference, ref _rightShrugHeld, in targets.RightHand, dt, _shrugReleaseSeconds);
-            else Release(ref _rightShrugHeld, dt, _shrugReleaseSeconds);
+            // The held shrugs: released by the time passed, then the start of each arm's solve (an inactive hand's arm keeps its
+            // pose, its shrug released all the same).
+            if (holdShrugs && deltaSeconds > 0f && deltaSeconds < float.PositiveInfinity)
+            {
+                float release = 1f - MathF.Exp(-deltaSeconds / _shrugReleaseSeconds);
+                _leftShrugHeld = Quaternion.Normalize(Quaternion.Slerp(_leftShrugHeld, Quaternion.Identity, release));
+                _rightShrugHeld = Quaternion.Normalize(Quaternion.Slerp(_rightShrugHeld, Quaternion.Identity, release));
+            }
+            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftClavicle, _leftClavicleReference, ref _leftShrugHeld, in targets.LeftHand, holdShrugs);
+            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightClavicle, _rightClavicleReference, ref _rightShrugHeld, in targets.RightHand, holdShrugs);
             pose.UpdateWorld();
             return report;
         }
@@ -259,42 +266,33 @@ namespace AvatarGo.Core
             return Vector3.Distance(pose.World[_spine[0]].Position, pose.World[end].Position);
         }
 
-        // An arm starts from its clavicle's held shrug; if its hand still cannot reach the goal, the clavicle turns toward it
-        // by the least angle that brings the goal within the arm's reach (up to MaxClavicleDegrees, as a shoulder shrugs),
-        // the arm is solved again, and the shrug is held if it was enough; what is still out of reach is reported.
+        // An arm starts from its clavicle's held shrug (the calibration pose's clavicle when none is held); if its hand still
+        // cannot reach the goal, the clavicle turns toward it by the least angle that brings the goal within the arm's reach,
+        // the whole shrug at most MaxClavicleDegrees from the calibration pose (as a shoulder shrugs), the arm is solved
+        // again, and the shrug is held if it was enough: a goal out of any shoulder's reach (swapped controllers, a glitch)
+        // says nothing about where the wearer's shoulder is. What is still out of reach is reported.
         private static LimbResult SolveArm(SkeletonPose pose, LimbChain arm, int clavicle, Quaternion clavicleReference, ref Quaternion held,
-            in LimbTarget target, float dt, float releaseSeconds)
+            in LimbTarget target, bool hold)
         {
             if (clavicle < 0) return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
             int parent = pose.Skeleton.GetParent(clavicle);
-            Release(ref held, dt, releaseSeconds);
-            // A single-frame solve (dt 0) starts from the calibration pose's clavicle, whatever earlier frames held.
-            pose.Local[clavicle] = pose.Local[clavicle].WithRotation(dt > 0f ? Quaternion.Normalize(held * clavicleReference) : clavicleReference);
+            Quaternion start = hold ? held : Quaternion.Identity;
+            pose.Local[clavicle] = pose.Local[clavicle].WithRotation(Quaternion.Normalize(start * clavicleReference));
             pose.World[clavicle] = (parent < 0 ? pose.Origin : pose.World[parent]) * pose.Local[clavicle];
             LimbResult result = TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
             if (result.Reached || !(result.DistanceLeft > 1e-4f)) return result;
 
             Quaternion turn = ShrugToward(pose.World[clavicle].Position, pose.World[arm.Root].Position, pose.World[arm.End].Position, target.Goal.Position);
-            float angle = Rotations.AngleDegrees(Quaternion.Identity, turn);
+            Quaternion parentRotation = parent < 0 ? pose.Origin.Rotation : pose.World[parent].Rotation;
+            Quaternion shrug = Quaternion.Normalize(Quaternion.Conjugate(parentRotation) * turn * parentRotation * start); // in the parent's frame
+            if (!Rotations.IsFinite(shrug)) return result;
+            float angle = Rotations.AngleDegrees(Quaternion.Identity, shrug);
             bool enough = angle <= MaxClavicleDegrees;
-            if (!enough) turn = Quaternion.Slerp(Quaternion.Identity, turn, MaxClavicleDegrees / angle);
-            pose.RotateWorld(clavicle, turn);
+            if (!enough) shrug = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Identity, shrug, MaxClavicleDegrees / angle));
+            pose.Local[clavicle] = pose.Local[clavicle].WithRotation(Quaternion.Normalize(shrug * clavicleReference));
             pose.World[clavicle] = (parent < 0 ? pose.Origin : pose.World[parent]) * pose.Local[clavicle];
-            // Held only when it reaches the hand: a goal out of any shoulder's reach (swapped controllers, a glitch) says
-            // nothing about where the wearer's shoulder is.
-            if (dt > 0f && enough)
-            {
-                Quaternion parentRotation = parent < 0 ? pose.Origin.Rotation : pose.World[parent].Rotation;
-                held = Quaternion.Normalize(Quaternion.Conjugate(parentRotation) * turn * parentRotation * held);
-                float heldAngle = Rotations.AngleDegrees(Quaternion.Identity, held);
-                if (heldAngle > MaxClavicleDegrees) held = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Identity, held, MaxClavicleDegrees / heldAngle));
-            }
+            if (hold && enough) held = shrug;
             return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
-        }
-
-        private static void Release(ref Quaternion held, float dt, float releaseSeconds)
-        {
-            if (dt > 0f) held = Quaternion.Normalize(Quaternion.Slerp(held, Quaternion.Identity, 1f - MathF.Exp(-dt / releaseSeconds)));
         }
 
         // The least turn of the clavicle about its pivot that brings the goal within reach of the stretched arm: the shoulder

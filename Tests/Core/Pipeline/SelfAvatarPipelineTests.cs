@@ -214,6 +214,34 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void ARepeatedFrameDoesNotMoveTheShoulders()
+        {
+            // Unity's Time.timeAsDouble stands still while Time.timeScale is 0, so a paused game gives the pipeline the same
+            // time again; so does a recording with a repeated timestamp. Every 200th frame of a 90 Hz session is fed twice:
+            // on the repeat the shoulders stay where they were (the held shrug is neither dropped nor released).
+            string session = Sessions.Simulate("mocapbank_30fps.bvh", new SimulationOptions { Rate = 90, Seed = 3 });
+            using SessionReader reader = Sessions.Read(session);
+            var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
+            SessionFrame f = reader.CreateFrame();
+            float largest = 0f;
+            int calibrated = 0, repeats = 0;
+            while (reader.ReadFrame(f))
+            {
+                pipeline.Update(f);
+                if (pipeline.State != CalibrationState.Calibrated || ++calibrated % 200 != 0) continue;
+                Vector3 left = pipeline.Pose.World[pipeline.ScaledAvatar[HumanoidBone.LeftUpperArm]].Position;
+                Vector3 right = pipeline.Pose.World[pipeline.ScaledAvatar[HumanoidBone.RightUpperArm]].Position;
+                pipeline.Update(f);
+                repeats++;
+                largest = Math.Max(largest, Vector3.Distance(left, pipeline.Pose.World[pipeline.ScaledAvatar[HumanoidBone.LeftUpperArm]].Position));
+                largest = Math.Max(largest, Vector3.Distance(right, pipeline.Pose.World[pipeline.ScaledAvatar[HumanoidBone.RightUpperArm]].Position));
+            }
+            TestContext.WriteLine($"{repeats} repeated frames: shoulders moved at most {largest * 1000:F2} mm");
+            Assert.That(repeats, Is.GreaterThanOrEqualTo(5));
+            Assert.That(largest, Is.LessThan(0.001f), "the shoulders on a repeated frame (m)");
+        }
+
+        [Test]
         public void TheSolvedPoseDoesNotDependOnTheFrameRate()
         {
             // The same noise-free motion sampled at 72 and 144 Hz. With one calibration restored into both runs and no shrug

@@ -341,5 +341,52 @@ namespace AvatarGo.Core.Tests
             Assert.Throws<ArgumentOutOfRangeException>(() => ik3.ShrugReleaseSeconds = float.NaN);
             Assert.Throws<ArgumentOutOfRangeException>(() => new PipelineSettings().ShrugReleaseSeconds = float.PositiveInfinity);
         }
+
+        /// <summary>
+        /// The 20° a shoulder shrugs bounds the whole shrug, held part included: a hand reaching 1 mm further down each
+        /// frame (90 Hz) to 20 cm beyond its arm never turns the clavicle past 20° from the calibration pose, as a single
+        /// frame at 20 cm does not (found in review: the limit once applied to each frame's extra turn, 39.9° here).
+        /// </summary>
+        [Test]
+        public void TheHeldShrugStaysWithinTheShouldersRange()
+        {
+            var (ik, pose, targets, truth) = HangingArm(0f);
+            Vector3 goal0 = targets.LeftHand.Goal.Position;
+            float largest = 0f;
+            for (int i = 0; i <= 200; i++)
+            {
+                BodyTargets t = targets;
+                t.LeftHand.Goal = new RigidPose(goal0 - Vector3.UnitY * (i * 0.001f), targets.LeftHand.Goal.Rotation);
+                ik.Solve(in t, pose, 1f / 90);
+                largest = Math.Max(largest, ClavicleTurnDegrees(pose, truth));
+            }
+            TestContext.WriteLine($"largest clavicle turn over the reach: {largest:F2} deg");
+            Assert.That(largest, Is.LessThanOrEqualTo(20.01f));
+            Assert.That(largest, Is.GreaterThan(19.9f), "and the shrug does reach its limit");
+        }
+
+        /// <summary>
+        /// A frame in which no time passed (a repeated timestamp, or Unity's scaled time while paused) keeps the held shrug:
+        /// the shoulder does not move. Found in review: it once started such a frame from the calibration pose (the shoulder
+        /// jumped 30 mm and back).
+        /// </summary>
+        [Test]
+        public void AFrameWithoutElapsedTimeKeepsTheHeldShrug()
+        {
+            var (ik, pose, targets, truth) = HangingArm(0.03f);
+            ik.Solve(in targets, pose, 1f / 90);
+            BodyTargets within = targets;
+            within.LeftHand.Goal = new RigidPose(targets.LeftHand.Goal.Position + Vector3.UnitY * 0.08f, targets.LeftHand.Goal.Rotation);
+            ik.Solve(in within, pose, 1f / 90);
+            float held = ClavicleTurnDegrees(pose, truth);
+            Vector3 shoulder = pose.World[truth[HumanoidBone.LeftUpperArm]].Position;
+            foreach (float dt in new[] { 0f, -0.01f, float.NaN })
+            {
+                ik.Solve(in within, pose, dt);
+                Assert.That(ClavicleTurnDegrees(pose, truth), Is.EqualTo(held).Within(1e-3f), $"dt {dt}: the shrug kept, not released");
+                Approx.Near(shoulder, pose.World[truth[HumanoidBone.LeftUpperArm]].Position, 1e-5f, $"dt {dt}: the shoulder stays");
+            }
+            Assert.That(held, Is.GreaterThan(5f), "a shrug was held");
+        }
     }
 }
