@@ -154,7 +154,11 @@ namespace AvatarGo.Core
         /// Sites included), in file units, and from it the guessed metres per file unit: under 3 units → metres (1), under
         /// 300 → centimetres (0.01), otherwise millimetres (0.001). For a human that chain (hips to a fingertip or the head)
         /// is 0.7–1.6 m whatever the rest pose: it depends on the bones' lengths only, not on how the rest bends them (a rest
-        /// with every bone along one axis, or crumpled, guesses the same unit as a T-pose).
+        /// with every bone along one axis, or crumpled, guesses the same unit as a T-pose). When that unit makes the chain
+        /// implausible for a person (outside <see cref="PlausibleChainMinMetres"/>…<see cref="PlausibleChainMaxMetres"/>), the unit among metres, centimetres,
+        /// millimetres, inches (0.0254) and the CMU database's BVH unit (0.0254 / 0.45 m: the CMU clips converted to BVH are
+        /// in it, a 24-unit chain) that brings the chain nearest 1.2 m is taken instead: those clips read as 20 cm people
+        /// before.
         /// </summary>
         public float GuessMetresPerUnit()
         {
@@ -166,10 +170,28 @@ namespace AvatarGo.Core
                 chain[j] = (parent < 0 ? 0f : chain[parent]) + (parent < 0 ? 0f : _fileOffsets[j].Length());
                 longest = Math.Max(longest, chain[j]);
             }
-            if (longest < 3f) return 1f;
-            if (longest < 300f) return 0.01f;
-            return 0.001f;
+            float unit = longest < 3f ? 1f : longest < 300f ? 0.01f : 0.001f;
+            float metres = longest * unit;
+            if (!(longest > 0f) || (metres >= PlausibleChainMinMetres && metres <= PlausibleChainMaxMetres)) return unit;
+            float best = unit, bestDistance = float.MaxValue;
+            foreach (float candidate in CandidateUnits)
+            {
+                float distance = Math.Abs((float)Math.Log(longest * candidate / 1.2f));
+                if (distance < bestDistance) { best = candidate; bestDistance = distance; }
+            }
+            return best;
         }
+
+        /// <summary>
+        /// The shortest longest-chain (metres) <see cref="GuessMetresPerUnit"/> accepts for the unit it guesses first: 0.6 m,
+        /// a small child's (the shared clips' are 1.10–1.38 m).
+        /// </summary>
+        public const float PlausibleChainMinMetres = 0.6f;
+
+        /// <summary>The longest longest-chain (metres) <see cref="GuessMetresPerUnit"/> accepts for the unit it guesses first: 2.4 m, twice an adult's.</summary>
+        public const float PlausibleChainMaxMetres = 2.4f;
+
+        private static readonly float[] CandidateUnits = { 1f, 0.01f, 0.001f, 0.0254f, 0.0254f / 0.45f };
 
         /// <summary>
         /// Creates a clip from local poses of <paramref name="skeleton"/> (Unity's frame, metres), for writing:

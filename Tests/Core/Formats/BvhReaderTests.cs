@@ -202,5 +202,37 @@ namespace AvatarGo.Core.Tests
             Assert.That(BvhReader.ReadFile(TestData.Mocap("mixamo_fingers_30fps.bvh")).GuessMetresPerUnit(), Is.EqualTo(0.01f));
             Assert.That(BvhReader.ReadFile(TestData.Mocap("rigify_6channel_24fps_first240.bvh")).GuessMetresPerUnit(), Is.EqualTo(1f));
         }
+
+        /// <summary>
+        /// The same motion written in metres, centimetres, millimetres, inches and the CMU database's BVH unit (0.0254 / 0.45
+        /// m, which its converted clips use: a 24-unit chain that read as a 20 cm person before) reads back as the same
+        /// clip in metres, and so gives the same avatar: the guessed unit is the one it was written in.
+        /// </summary>
+        [TestCase(1f), TestCase(0.01f), TestCase(0.001f), TestCase(0.0254f), TestCase(0.0254f / 0.45f)]
+        public void EveryCommonUnitIsRecognised(float metresPerUnit)
+        {
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            var frames = new List<RigidPose[]>();
+            var local = new RigidPose[clip.Skeleton.JointCount];
+            var world = new RigidPose[clip.Skeleton.JointCount];
+            for (int f = 0; f < clip.FrameCount; f++)
+            {
+                clip.GetWorldPoses(f, local, world);
+                frames.Add((RigidPose[])local.Clone());
+            }
+            var text = new StringWriter();
+            BvhWriter.Write(text, BvhClip.FromPoses(clip.Skeleton, frames, clip.FrameTime, metresPerUnit));
+            BvhClip raw = BvhReader.Read(new StringReader(text.ToString()), "units");
+            Assert.That(raw.GuessMetresPerUnit(), Is.EqualTo(metresPerUnit).Within(1e-6f), "the unit it was written in");
+            BvhClip back = BvhReader.Read(new StringReader(text.ToString()), "units", new BvhReadOptions { ToMetres = true });
+            var backWorld = new RigidPose[world.Length];
+            for (int f = 0; f < clip.FrameCount; f += 20)
+            {
+                clip.GetWorldPoses(f, local, world);
+                back.GetWorldPoses(f, local, backWorld);
+                for (int j = 0; j < world.Length; j++)
+                    Approx.Near(world[j].Position, backWorld[j].Position, 1e-4f, $"frame {f} {clip.Skeleton.GetName(j)}");
+            }
+        }
     }
 }
