@@ -33,6 +33,47 @@ namespace AvatarGo.Simulation
             if (!(frames < int.MaxValue)) throw new ArgumentException($"The clip is too long to simulate at {_options.Rate} Hz ({(long)Math.Min(frames, long.MaxValue)} frames).", nameof(clip));
             _map = map ?? HumanoidNaming.Detect(clip.Skeleton);
             _map.RequireComplete(nameof(clip));
+            Upright = UprightTurn(clip, _map);
+        }
+
+        /// <summary>
+        /// The turn that stands the clip's motion up (applied to its roots before anything else): the identity for a clip
+        /// whose up is +Y, as BVH has it; for a clip recorded with another axis up (Z-up exports), the quarter or half turn
+        /// that takes that axis to +Y. The up is where the head is from the feet, averaged over the clip, snapped to the
+        /// nearest axis, and only taken when that average lies within 45° of it (a clip that lies down too much to tell is
+        /// left as it is).
+        /// </summary>
+        public Quaternion Upright { get; }
+
+        private static Quaternion UprightTurn(BvhClip clip, HumanoidMap map)
+        {
+            Skeleton s = clip.Skeleton;
+            var local = new RigidPose[s.JointCount];
+            var world = new RigidPose[s.JointCount];
+            int head = map[HumanoidBone.Head], left = map[HumanoidBone.LeftFoot], right = map[HumanoidBone.RightFoot];
+            Vector3 sum = Vector3.Zero;
+            int step = Math.Max(1, clip.FrameCount / 200);
+            for (int f = 0; f < clip.FrameCount; f += step)
+            {
+                clip.GetWorldPoses(f, local, world);
+                Vector3 up = world[head].Position - 0.5f * (world[left].Position + world[right].Position);
+                if (up.LengthSquared() > 1e-12f) sum += Vector3.Normalize(up);
+            }
+            Vector3 mean = Vectors.NormalizeOr(sum, Vector3.UnitY);
+            Vector3 axis = Vector3.Zero;
+            foreach (Vector3 candidate in new[] { Vector3.UnitX, -Vector3.UnitX, Vector3.UnitY, -Vector3.UnitY, Vector3.UnitZ, -Vector3.UnitZ })
+                if (Vector3.Dot(mean, candidate) > 0.7071f) axis = candidate;
+            if (axis == Vector3.Zero || axis == Vector3.UnitY) return Quaternion.Identity;
+            // A half turn about X for -Y; otherwise the quarter turn from the axis to +Y.
+            return axis == -Vector3.UnitY ? Quaternion.CreateFromAxisAngle(Vector3.UnitX, MathF.PI) : Rotations.FromTo(axis, Vector3.UnitY);
+        }
+
+        private void StandUp(RigidPose[] local)
+        {
+            if (Upright == Quaternion.Identity) return;
+            Skeleton s = _map.Skeleton;
+            for (int j = 0; j < local.Length; j++)
+                if (s.GetParent(j) < 0) local[j] = new RigidPose(Vector3.Transform(local[j].Position, Upright), Quaternion.Normalize(Upright * local[j].Rotation));
         }
 
         /// <summary>The devices of the simulated session.</summary>
@@ -66,6 +107,7 @@ namespace AvatarGo.Simulation
             // local axes the clip's skeleton uses (a rest-pose twist would differ between rest conventions).
             var twistReference = new RigidPose[s.JointCount];
             if (_clip.FrameCount > 0) _clip.GetLocalPoses(0, twistReference); else s.GetRestLocal(twistReference);
+            StandUp(twistReference);
             var rig = new VirtualDeviceRig(_map, mountings, _options.Controller, twistReference);
             DeviceInfo[] devices = Devices();
             var calibrator = new Calibrator(devices, _map);
@@ -87,6 +129,7 @@ namespace AvatarGo.Simulation
             {
                 clipLocal[f] = new RigidPose[s.JointCount];
                 _clip.GetLocalPoses(f, clipLocal[f]);
+                StandUp(clipLocal[f]);
             }
 
             int total = FrameCount;

@@ -54,6 +54,8 @@ public sealed class SimulateCommand : ICommand
         }
         if (!WriteSession(simulator, output, stderr, "simulate")) return 1;
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"wrote {output}: {simulator.FrameCount} frames at {options.Rate:0.##} Hz"));
+        if (simulator.Upright != Quaternion.Identity)
+            stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"the clip's up is not +Y: its motion was turned {Rotations.AngleDegrees(Quaternion.Identity, simulator.Upright):0} deg to stand it up"));
         return 0;
     }
 

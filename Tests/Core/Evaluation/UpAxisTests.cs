@@ -1,0 +1,61 @@
+using System.Collections.Generic;
+using System.IO;
+using System.Numerics;
+using AvatarGo.Simulation;
+using NUnit.Framework;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// A clip recorded with another axis up (Z-up exports, a clip upside down or on its side) is the same motion: the
+    /// simulator stands it up (<see cref="SessionSimulator.Upright"/>) and the avatar follows it exactly as it follows the
+    /// Y-up original. Before, such a clip simulated a wearer lying on the floor, and calibration failed.
+    /// </summary>
+    public class UpAxisTests
+    {
+        private static BvhClip Turned(BvhClip clip, Quaternion turn)
+        {
+            Skeleton s = clip.Skeleton;
+            var frames = new List<RigidPose[]>(clip.FrameCount);
+            var local = new RigidPose[s.JointCount];
+            var world = new RigidPose[s.JointCount];
+            for (int f = 0; f < clip.FrameCount; f++)
+            {
+                clip.GetWorldPoses(f, local, world);
+                var turned = (RigidPose[])local.Clone();
+                for (int j = 0; j < turned.Length; j++)
+                    if (s.GetParent(j) < 0) turned[j] = new RigidPose(Vector3.Transform(local[j].Position, turn), Quaternion.Normalize(turn * local[j].Rotation));
+                frames.Add(turned);
+            }
+            return BvhClip.FromPoses(s, frames, clip.FrameTime);
+        }
+
+        private static (EvaluationReport report, Quaternion upright) Evaluate(BvhClip clip)
+        {
+            var simulator = new SessionSimulator(clip, new SimulationOptions { Seed = 1 });
+            var text = new StringWriter();
+            using (var writer = new SessionWriter(text, simulator.CreateHeader())) simulator.Run(writer);
+            using var reader = new SessionReader(new StringReader(text.ToString()), "up");
+            return (SessionEvaluator.Evaluate(reader, new PipelineSettings()), simulator.Upright);
+        }
+
+        [TestCase(90f, 1f, 0f, 0f)]   // a quarter turn about X: Z-up
+        [TestCase(-90f, 1f, 0f, 0f)]  // -Z up
+        [TestCase(90f, 0f, 0f, 1f)]   // on its side: X-up
+        [TestCase(180f, 1f, 0f, 0f)]  // upside down
+        public void AClipWithAnotherAxisUpGivesTheSameAvatar(float degrees, float x, float y, float z)
+        {
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            Quaternion turn = Rotations.AngleAxis(degrees, new Vector3(x, y, z));
+            var (own, ownUpright) = Evaluate(clip);
+            var (other, upright) = Evaluate(Turned(clip, turn));
+            Assert.That(ownUpright, Is.EqualTo(Quaternion.Identity), "a Y-up clip is left as it is");
+            Assert.That(Rotations.AngleDegrees(upright * turn, Quaternion.Identity) < 0.01f || Vector3.Distance(Vector3.Transform(Vector3.UnitY, upright * turn), Vector3.UnitY) < 1e-4f,
+                Is.True, "the turn found stands the clip up");
+            Assert.That(other.Profile, Is.Not.Null, other.CalibrationMessage);
+            Assert.That(other.Frames, Is.EqualTo(own.Frames));
+            Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(0.05), "MPJPE (mm)");
+            Assert.That(other.EndEffectorMm.Median, Is.EqualTo(own.EndEffectorMm.Median).Within(0.05), "end effectors median (mm)");
+        }
+    }
+}
