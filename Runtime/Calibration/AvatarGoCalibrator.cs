@@ -510,7 +510,7 @@ namespace AvatarGo
                 _hasMirror = true;
             }
             _display.UpdateMarkers(_frame, TrackingSpace, m_ShowDeviceMarkers && _flow.ShowsMarkers, _hasMirror, _mirror);
-            _display.UpdateText(_refinement.Shown(_flow.Message), m_ShowInstructions, HeadSample(), TrackingSpace, Time.deltaTime);
+            _display.UpdateText(_refinement.Shown(_flow.Message), m_ShowInstructions, HeadSample(), TrackingSpace, Time.unscaledDeltaTime); // the panel follows the head in a paused game too
         }
 
         // The HMD's sample: the device playing the head once identified, else the first HMD of the source.

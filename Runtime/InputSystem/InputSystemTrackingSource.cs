@@ -138,7 +138,7 @@ namespace AvatarGo
         {
             if (frame == null) return;
             frame.Clear();
-            frame.Time = Time.timeAsDouble;
+            frame.Time = Time.unscaledTimeAsDouble; // real time: a paused game (timeScale 0) still tracks and calibrates
             if (_actions[0] == null || frame.Samples.Length < BodyRoles.Count) return; // disabled: every device lost
             try
             {
@@ -148,7 +148,7 @@ namespace AvatarGo
             {
                 // An action bound to a control of another type (ReadValue<Vector3> on an axis): a setup error, logged once.
                 frame.Clear();
-                frame.Time = Time.timeAsDouble;
+                frame.Time = Time.unscaledTimeAsDouble; // real time: a paused game (timeScale 0) still tracks and calibrates
                 SetupErrors.Disable(this, "AvatarGo: the Input System Tracking Source cannot read its actions (" + e.Message +
                                           "): check that each is bound to a control of its type (Vector3, Quaternion, Integer, Axis). The component is disabled.");
             }

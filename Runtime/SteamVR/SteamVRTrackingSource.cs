@@ -90,7 +90,7 @@ namespace AvatarGo
         {
             if (frame == null) return;
             frame.Clear();
-            frame.Time = Time.timeAsDouble;
+            frame.Time = Time.unscaledTimeAsDouble; // real time: a paused game (timeScale 0) still tracks and calibrates
             if (frame.Samples.Length < BodyRoles.Count || !isActiveAndEnabled) return;
             if (m_Head != null) frame.Samples[0] = new DeviceSample(ToTrackingSpace(m_Head), true);
             if (!SteamVR_Input.initialized) return; // before SteamVR starts: only the head transform

@@ -62,7 +62,7 @@ namespace AvatarGo
         {
             SessionHeader header = Header;
             frame.Clear();
-            frame.Time = Time.timeAsDouble;
+            frame.Time = Time.unscaledTimeAsDouble; // real time: a paused game (timeScale 0) still tracks and calibrates
             _events.Clear();
             for (int d = 0; d < header.Devices.Count; d++)
             {

@@ -76,7 +76,7 @@ namespace AvatarGo
             if (frame == null) return;
             if (!_listening && isActiveAndEnabled) Listen();
             frame.Clear();
-            frame.Time = Time.timeAsDouble;
+            frame.Time = Time.unscaledTimeAsDouble; // real time: a paused game (timeScale 0) still tracks and calibrates
             int count = System.Math.Min(frame.Samples.Length, _registry.Count);
             for (int i = 0; i < count; i++)
             {

@@ -6,9 +6,11 @@ namespace UnityEngine
     // UnityCsReference@2021.3 Runtime/Export/Time/Time.bindings.cs
     public class Time
     {
-        public static double timeAsDouble => throw null;
+        public static double unscaledTimeAsDouble => throw null;
 
         public static float deltaTime => throw null;
+
+        public static float unscaledDeltaTime => throw null;
 
         public static int frameCount => throw null;
     }
