@@ -42,10 +42,7 @@ namespace AvatarGo.Core.Tests
 
         private static EvaluationReport Evaluate(BvhClip clip)
         {
-            var simulator = new SessionSimulator(clip, new SimulationOptions { Seed = 2 });
-            var text = new StringWriter();
-            using (var writer = new SessionWriter(text, simulator.CreateHeader())) simulator.Run(writer);
-            using var reader = new SessionReader(new StringReader(text.ToString()), clip.Skeleton.GetName(0));
+            using SessionReader reader = Sessions.Read(Sessions.Simulate(clip, new SimulationOptions { Seed = 2 }));
             return SessionEvaluator.Evaluate(reader, new PipelineSettings());
         }
 

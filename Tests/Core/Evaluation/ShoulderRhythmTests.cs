@@ -1,5 +1,4 @@
 using System;
-using System.Collections.Generic;
 using System.IO;
 using System.Numerics;
 using AvatarGo.Simulation;
@@ -26,22 +25,15 @@ namespace AvatarGo.Core.Tests
         {
             Skeleton s = clip.Skeleton;
             HumanoidMap map = HumanoidNaming.Detect(s);
-            var frames = new List<RigidPose[]>(clip.FrameCount);
-            var local = new RigidPose[s.JointCount];
-            var world = new RigidPose[s.JointCount];
-            var pose = new SkeletonPose(s);
-            for (int f = 0; f < clip.FrameCount; f++)
+            return Sessions.Rewrite(clip, (f, pose) =>
             {
-                clip.GetWorldPoses(f, local, world);
-                Array.Copy(local, pose.Local, local.Length);
-                pose.UpdateWorld();
-                Vector3 hips = 0.5f * (world[map[HumanoidBone.LeftUpperLeg]].Position + world[map[HumanoidBone.RightUpperLeg]].Position);
+                RigidPose[] w = pose.World;
+                Vector3 hips = 0.5f * (w[map[HumanoidBone.LeftUpperLeg]].Position + w[map[HumanoidBone.RightUpperLeg]].Position);
                 foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
                 {
                     int clavicle = map[HumanoidBones.OnSide(HumanoidBone.LeftShoulder, side)];
                     int shoulder = map[HumanoidBones.OnSide(HumanoidBone.LeftUpperArm, side)];
                     int elbow = map[HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side)];
-                    RigidPose[] w = pose.World;
                     Vector3 down = Vector3.Normalize(hips - w[s.GetParent(clavicle)].Position);
                     Vector3 arm = Vector3.Normalize(w[elbow].Position - w[shoulder].Position);
                     float elevation = MathF.Acos(Math.Clamp(Vector3.Dot(arm, down), -1f, 1f));
@@ -52,9 +44,7 @@ namespace AvatarGo.Core.Tests
                     pose.SetWorldRotation(shoulder, armWorld);
                     pose.UpdateWorld();
                 }
-                frames.Add((RigidPose[])pose.Local.Clone());
-            }
-            return BvhClip.FromPoses(s, frames, clip.FrameTime);
+            });
         }
 
         private static EvaluationReport Evaluate(string session, float shrugReleaseSeconds)
@@ -100,11 +90,9 @@ namespace AvatarGo.Core.Tests
         public void TheHeldShrugStillHelpsWhenTheShouldersMoveWithTheArms(string file, float k)
         {
             BvhClip clip = WithShoulderRhythm(BvhReader.ReadFile(TestData.Mocap(file), new BvhReadOptions { ToMetres = true }), k);
-            var simulator = new SessionSimulator(clip, new SimulationOptions { Seed = 1 });
-            var text = new StringWriter();
-            using (var writer = new SessionWriter(text, simulator.CreateHeader())) simulator.Run(writer);
-            EvaluationReport none = Evaluate(text.ToString(), 0f);
-            EvaluationReport held = Evaluate(text.ToString(), FullBodyIk.DefaultShrugReleaseSeconds);
+            string session = Sessions.Simulate(clip, new SimulationOptions { Seed = 1 });
+            EvaluationReport none = Evaluate(session, 0f);
+            EvaluationReport held = Evaluate(session, FullBodyIk.DefaultShrugReleaseSeconds);
             TestContext.WriteLine($"{file} k {k}: MPJPE {none.AllJointsMm.Mean:F2} -> {held.AllJointsMm.Mean:F2} mm, elbows and knees median {none.MidJointMm.Median:F1} -> {held.MidJointMm.Median:F1} mm");
             Assert.That(none.Profile, Is.Not.Null, none.CalibrationMessage);
             Assert.That(held.AllJointsMm.Mean, Is.LessThan(none.AllJointsMm.Mean), "MPJPE (mm)");

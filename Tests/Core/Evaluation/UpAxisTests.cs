@@ -1,4 +1,3 @@
-using System.Collections.Generic;
 using System.IO;
 using System.Numerics;
 using AvatarGo.Simulation;
@@ -13,22 +12,11 @@ namespace AvatarGo.Core.Tests
     /// </summary>
     public class UpAxisTests
     {
-        private static BvhClip Turned(BvhClip clip, Quaternion turn)
+        private static BvhClip Turned(BvhClip clip, Quaternion turn) => Sessions.Rewrite(clip, (f, pose) =>
         {
-            Skeleton s = clip.Skeleton;
-            var frames = new List<RigidPose[]>(clip.FrameCount);
-            var local = new RigidPose[s.JointCount];
-            var world = new RigidPose[s.JointCount];
-            for (int f = 0; f < clip.FrameCount; f++)
-            {
-                clip.GetWorldPoses(f, local, world);
-                var turned = (RigidPose[])local.Clone();
-                for (int j = 0; j < turned.Length; j++)
-                    if (s.GetParent(j) < 0) turned[j] = new RigidPose(Vector3.Transform(local[j].Position, turn), Quaternion.Normalize(turn * local[j].Rotation));
-                frames.Add(turned);
-            }
-            return BvhClip.FromPoses(s, frames, clip.FrameTime);
-        }
+            for (int j = 0; j < pose.Local.Length; j++)
+                if (clip.Skeleton.GetParent(j) < 0) pose.Local[j] = new RigidPose(Vector3.Transform(pose.Local[j].Position, turn), Quaternion.Normalize(turn * pose.Local[j].Rotation));
+        });
 
         private static (EvaluationReport report, Quaternion upright) Evaluate(BvhClip clip)
         {
