@@ -33,15 +33,16 @@ namespace AvatarGo.Simulation
             if (!(frames < int.MaxValue)) throw new ArgumentException($"The clip is too long to simulate at {_options.Rate} Hz ({(long)Math.Min(frames, long.MaxValue)} frames).", nameof(clip));
             _map = map ?? HumanoidNaming.Detect(clip.Skeleton);
             _map.RequireComplete(nameof(clip));
-            Upright = UprightTurn(clip, _map);
+            Upright = _options.StandClipUp ? UprightTurn(clip, _map) : Quaternion.Identity;
         }
 
         /// <summary>
         /// The turn that stands the clip's motion up (applied to its roots before anything else): the identity for a clip
-        /// whose up is +Y, as BVH has it; for a clip recorded with another axis up (Z-up exports), the quarter or half turn
-        /// that takes that axis to +Y. The up is where the head is from the feet, averaged over the clip, snapped to the
-        /// nearest axis, and only taken when that average lies within 45° of it (a clip that lies down too much to tell is
-        /// left as it is).
+        /// whose up is +Y, as BVH defines it; for a clip recorded with another axis up (Z-up exports), the quarter or half
+        /// turn that takes that axis to +Y. The up is the mean of the unit vectors from the feet to the head over the clip:
+        /// +Y is kept whenever that mean leans toward it (Y at least 0.5) or the frames disagree (the mean shorter than
+        /// 0.8: a clip that lies down or stands on its hands a good part of the time), and another axis is taken only when
+        /// the mean lies within 25° of it. <see cref="SimulationOptions.StandClipUp"/> false keeps every clip as it is.
         /// </summary>
         public Quaternion Upright { get; }
 
@@ -59,11 +60,14 @@ namespace AvatarGo.Simulation
                 Vector3 up = world[head].Position - 0.5f * (world[left].Position + world[right].Position);
                 if (up.LengthSquared() > 1e-12f) sum += Vector3.Normalize(up);
             }
-            Vector3 mean = Vectors.NormalizeOr(sum, Vector3.UnitY);
+            int samples = (clip.FrameCount + step - 1) / step;
+            Vector3 mean = sum / Math.Max(1, samples);
+            if (mean.Y >= 0.5f || mean.Length() < 0.8f) return Quaternion.Identity;
+            Vector3 direction = Vector3.Normalize(mean);
             Vector3 axis = Vector3.Zero;
-            foreach (Vector3 candidate in new[] { Vector3.UnitX, -Vector3.UnitX, Vector3.UnitY, -Vector3.UnitY, Vector3.UnitZ, -Vector3.UnitZ })
-                if (Vector3.Dot(mean, candidate) > 0.7071f) axis = candidate;
-            if (axis == Vector3.Zero || axis == Vector3.UnitY) return Quaternion.Identity;
+            foreach (Vector3 candidate in new[] { Vector3.UnitX, -Vector3.UnitX, -Vector3.UnitY, Vector3.UnitZ, -Vector3.UnitZ })
+                if (Vector3.Dot(direction, candidate) > 0.906f) axis = candidate; // within 25°
+            if (axis == Vector3.Zero) return Quaternion.Identity;
             // A half turn about X for -Y; otherwise the quarter turn from the axis to +Y.
             return axis == -Vector3.UnitY ? Quaternion.CreateFromAxisAngle(Vector3.UnitX, MathF.PI) : Rotations.FromTo(axis, Vector3.UnitY);
         }

@@ -50,5 +50,11 @@ namespace AvatarGo.Simulation
 
         /// <summary>Seconds blending from the T-pose into the clip's first frame (1).</summary>
         public float BlendSeconds { get; set; } = 1f;
+
+        /// <summary>
+        /// Whether a clip recorded with another axis up (a Z-up export) is stood up before simulating
+        /// (<see cref="SessionSimulator.Upright"/>; default true). False simulates the clip as it is, +Y up as BVH defines it.
+        /// </summary>
+        public bool StandClipUp { get; set; } = true;
     }
 }

@@ -38,7 +38,7 @@ namespace AvatarGo
         private string m_FilePath = "";
 
         [SerializeField]
-        [Tooltip("RealTime: plays with the application's clock. Stepped: one recorded frame per Step() call (tests).")]
+        [Tooltip("RealTime: plays with the game's (scaled) clock, Time.deltaTime times Speed. Stepped: one recorded frame per Step() call (tests).")]
         private PlaybackMode m_Mode = PlaybackMode.RealTime;
 
         [SerializeField]

@@ -157,8 +157,9 @@ namespace AvatarGo.Core
         /// with every bone along one axis, or crumpled, guesses the same unit as a T-pose). When that unit makes the chain
         /// implausible for a person (outside <see cref="PlausibleChainMinMetres"/>…<see cref="PlausibleChainMaxMetres"/>), the unit among metres, centimetres,
         /// millimetres, inches (0.0254) and the CMU database's BVH unit (0.0254 / 0.45 m: the CMU clips converted to BVH are
-        /// in it, a 24-unit chain) that brings the chain nearest 1.2 m is taken instead: those clips read as 20 cm people
-        /// before.
+        /// in it, a 24-unit chain) that makes it plausible and brings it nearest 1.2 m is taken instead (those clips read as
+        /// 20 cm people before); when none does, the first guess stays. A chain near the lower limit can change unit across
+        /// it (a 0.59 m chain in centimetres reads as inches): the limit is where a person's chain ends (a small child's).
         /// </summary>
         public float GuessMetresPerUnit()
         {
@@ -176,10 +177,12 @@ namespace AvatarGo.Core
             float best = unit, bestDistance = float.MaxValue;
             foreach (float candidate in CandidateUnits)
             {
-                float distance = Math.Abs((float)Math.Log(longest * candidate / 1.2f));
+                float candidateMetres = longest * candidate;
+                if (!(candidateMetres >= PlausibleChainMinMetres && candidateMetres <= PlausibleChainMaxMetres)) continue;
+                float distance = Math.Abs((float)Math.Log(candidateMetres / 1.2f));
                 if (distance < bestDistance) { best = candidate; bestDistance = distance; }
             }
-            return best;
+            return best; // the first guess when no unit makes a plausible person either
         }
 
         /// <summary>

@@ -13,8 +13,9 @@ namespace AvatarGo.Core
     /// (<c>thigh_l</c>, <c>calf_l</c>, <c>upperarm_l</c>, <c>neck_01</c>, <c>index_01_l</c>), Unity-style names
     /// (<c>LeftUpperArm</c>, <c>LeftLowerLeg</c>; Xsens MVN's <c>T8</c>, <c>LeftForeArm</c>; Bandai Namco's <c>UpperArm_L</c>),
     /// SMPL (<c>L_Collar</c>, <c>L_Shoulder</c> = upper arm, <c>L_Elbow</c>, <c>L_Knee</c>), VRoid/VRM
-    /// (<c>J_Bip_C_Hips</c>, <c>J_Bip_L_UpperArm</c>), 3ds Max Biped (<c>Bip01_L_Clavicle</c>, <c>Bip01_L_Calf</c>) and Daz
-    /// Genesis (<c>hip</c>, <c>lShldrBend</c>, <c>lForearmBend</c>, <c>lThighBend</c>, <c>lShin</c>, <c>neckLower</c>).
+    /// (<c>J_Bip_C_Hips</c>, <c>J_Bip_L_UpperArm</c>), 3ds Max Biped (<c>Bip01_L_Clavicle</c>, <c>Bip01_L_Calf</c>), Character
+    /// Creator / iClone (<c>CC_Base_Hip</c>, <c>CC_Base_L_Upperarm</c>, <c>CC_Base_NeckTwist01</c>) and Daz Genesis (<c>hip</c>,
+    /// <c>lShldrBend</c>, <c>lForearmBend</c>, <c>lThighBend</c>, <c>lShin</c>, <c>neckLower</c>).
     /// Explicit overrides win.
     /// </summary>
     /// <remarks>
@@ -62,9 +63,10 @@ namespace AvatarGo.Core
                 used.Add(joint);
             }
 
-            // Hips: the unsided hips/pelvis joint nearest the root (Daz has a "hip" above its "pelvis", the legs under the
-            // one and the spine under the other), else the first root with children.
-            int hips = Shallowest(skeleton, cores, sides, "hips", "pelvis", "hip");
+            // Hips: a "hips" joint, else the unsided pelvis/hip joint nearest the root (Daz and Character Creator have a "hip"
+            // above their "pelvis", the legs under the one and the spine under the other), else the first root with children.
+            int hips = Find(skeleton, cores, sides, Side.None, -1, "hips");
+            if (hips < 0) hips = Shallowest(skeleton, cores, sides, "pelvis", "hip");
             if (hips < 0) hips = 0;
             Put(HumanoidBone.Hips, hips);
             hips = bones.TryGetValue(HumanoidBone.Hips, out int h) ? h : hips;
@@ -75,12 +77,16 @@ namespace AvatarGo.Core
                 // Legs.
                 int upLeg = Find(skeleton, cores, sides, side, hips, "upleg", "upperleg", "thigh", "hip", "femur");
                 int lowLeg = Find(skeleton, cores, sides, side, upLeg, "leg", "lowerleg", "shin", "knee", "calf", "tibia");
-                // An "ankle" above a "foot" (SMPL: L_Ankle, then L_Foot at the toes) is the foot bone, and the "foot" its toes.
+                // An "ankle" above a "foot" is the foot bone (the shin ends there): the toes are a toe-named joint below it, else
+                // the "foot" (SMPL: L_Ankle, then L_Foot at the toes).
                 int foot = Find(skeleton, cores, sides, side, lowLeg, "foot", "ankle");
                 int ankle = Find(skeleton, cores, sides, side, lowLeg, "ankle");
-                int toes = -1;
-                if (ankle >= 0 && foot >= 0 && foot != ankle && skeleton.IsAncestorOrSelf(ankle, foot)) { toes = foot; foot = ankle; }
-                if (toes < 0) toes = Find(skeleton, cores, sides, side, foot, "toebase", "toe", "toes", "ball", "toe0");
+                int toes = Find(skeleton, cores, sides, side, foot, "toebase", "toe", "toes", "ball", "toe0");
+                if (ankle >= 0 && foot >= 0 && foot != ankle && skeleton.IsAncestorOrSelf(ankle, foot))
+                {
+                    if (toes < 0) toes = foot;
+                    foot = ankle;
+                }
                 if (foot < 0) foot = EndSiteOf(skeleton, lowLeg);
                 Put(left ? HumanoidBone.LeftUpperLeg : HumanoidBone.RightUpperLeg, upLeg);
                 Put(left ? HumanoidBone.LeftLowerLeg : HumanoidBone.RightLowerLeg, lowLeg);
@@ -131,7 +137,7 @@ namespace AvatarGo.Core
             }
 
             // Neck and head.
-            int neck = Find(skeleton, cores, sides, Side.None, hips, "neck", "neck1", "neck01", "necklower");
+            int neck = Find(skeleton, cores, sides, Side.None, hips, "neck", "neck1", "neck01", "necklower", "necktwist01");
             int head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "head");
             if (head < 0) head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "face");
             if (head < 0 && neck >= 0) head = EndSiteOf(skeleton, neck);
@@ -256,8 +262,8 @@ namespace AvatarGo.Core
 
         private static readonly char[] Separators = { '_', ' ', '.', '-' };
 
-        // A side token after a rig prefix ("j_bip_l_upperarm", "bip01_l_thigh"; "c" marks the centre), or a Biped prefix
-        // alone ("bip01_pelvis"): true with the side and the name after the token. A first token "l"/"r" is left to the
+        // A side token after a rig prefix ("j_bip_l_upperarm", "bip01_l_thigh", "cc_base_l_thigh"; "c" marks the centre), or a
+        // Biped or Character Creator prefix alone ("bip01_pelvis", "cc_base_hip"): true with the side and the name after the token. A first token "l"/"r" is left to the
         // L_/R_ rule, a last one to the _L/_R rule.
         private static bool SideToken(string lower, out Side side, out string rest)
         {
@@ -275,6 +281,11 @@ namespace AvatarGo.Core
             if (tokens.Length > 1 && IsBipedPrefix(tokens[0]))
             {
                 rest = string.Join("_", tokens, 1, tokens.Length - 1);
+                return true;
+            }
+            if (tokens.Length > 2 && tokens[0] == "cc" && tokens[1] == "base") // Character Creator / iClone: CC_Base_Hip
+            {
+                rest = string.Join("_", tokens, 2, tokens.Length - 2);
                 return true;
             }
             return false;

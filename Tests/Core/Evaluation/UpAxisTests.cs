@@ -45,5 +45,27 @@ namespace AvatarGo.Core.Tests
             Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(0.05), "MPJPE (mm)");
             Assert.That(other.EndEffectorMm.Median, Is.EqualTo(own.EndEffectorMm.Median).Within(0.05), "end effectors median (mm)");
         }
+
+        /// <summary>
+        /// A Y-up clip that lies down or stands on its hands for a good part of it stays as it is (found in review: with 40 %
+        /// of its frames lying face down the whole clip was once turned 90°), and <see cref="SimulationOptions.StandClipUp"/>
+        /// false keeps even a Z-up clip as it is.
+        /// </summary>
+        [TestCase(0.4f, 90f), TestCase(0.45f, 180f), TestCase(0.6f, 180f)]
+        public void AClipThatOnlyPartlyLiesDownStaysUp(float share, float degrees)
+        {
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            Quaternion turn = Rotations.AngleAxis(degrees, Vector3.UnitX);
+            int turnedFrames = (int)(share * clip.FrameCount);
+            BvhClip partly = Sessions.Rewrite(clip, (f, pose) =>
+            {
+                if (f >= turnedFrames) return;
+                for (int j = 0; j < pose.Local.Length; j++)
+                    if (clip.Skeleton.GetParent(j) < 0) pose.Local[j] = new RigidPose(Vector3.Transform(pose.Local[j].Position, turn), Quaternion.Normalize(turn * pose.Local[j].Rotation));
+            });
+            Assert.That(new SessionSimulator(partly).Upright, Is.EqualTo(Quaternion.Identity));
+            Assert.That(new SessionSimulator(Turned(clip, Rotations.AngleAxis(90f, Vector3.UnitX)), new SimulationOptions { StandClipUp = false }).Upright,
+                Is.EqualTo(Quaternion.Identity), "StandClipUp false");
+        }
     }
 }

@@ -203,6 +203,26 @@ namespace AvatarGo.Core.Tests
             Assert.That(BvhReader.ReadFile(TestData.Mocap("rigify_6channel_24fps_first240.bvh")).GuessMetresPerUnit(), Is.EqualTo(1f));
         }
 
+        // A straight chain of four bones, each `bone` file units long.
+        private static BvhClip Chain(float bone)
+        {
+            string b = bone.ToString(System.Globalization.CultureInfo.InvariantCulture);
+            string text = "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n" +
+                          " JOINT A\n {\n  OFFSET 0 " + b + " 0\n  CHANNELS 3 Zrotation Xrotation Yrotation\n  JOINT B\n  {\n   OFFSET 0 " + b + " 0\n" +
+                          "   CHANNELS 3 Zrotation Xrotation Yrotation\n   JOINT C\n   {\n    OFFSET 0 " + b + " 0\n    CHANNELS 3 Zrotation Xrotation Yrotation\n" +
+                          "    End Site\n    {\n     OFFSET 0 " + b + " 0\n    }\n   }\n  }\n }\n}\nMOTION\nFrames: 1\nFrame Time: 0.033333\n" +
+                          "0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n";
+            return BvhReader.Read(new StringReader(text), "chain");
+        }
+
+        /// <summary>
+        /// The first guess stays when no unit makes the chain a plausible person (a 320-unit chain is 0.32 m in millimetres and
+        /// 3.2 m in centimetres: millimetres stay), and a chain a unit makes plausible takes it (24 units: the CMU unit).
+        /// </summary>
+        [TestCase(80f, 0.001f), TestCase(6f, 0.0254f / 0.45f), TestCase(30f, 0.01f), TestCase(0.3f, 1f)]
+        public void AnImplausibleChainKeepsTheFirstGuess(float bone, float expected) =>
+            Assert.That(Chain(bone).GuessMetresPerUnit(), Is.EqualTo(expected).Within(1e-7f));
+
         /// <summary>
         /// The same motion written in metres, centimetres, millimetres, inches and the CMU database's BVH unit (0.0254 / 0.45
         /// m, which its converted clips use: a 24-unit chain that read as a 20 cm person before) reads back as the same

@@ -216,8 +216,8 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void ARepeatedFrameDoesNotMoveTheShoulders()
         {
-            // Unity's Time.timeAsDouble stands still while Time.timeScale is 0, so a paused game gives the pipeline the same
-            // time again; so does a recording with a repeated timestamp. Every 200th frame of a 90 Hz session is fed twice:
+            // A recording with a repeated timestamp gives the pipeline the same time again, and so does the recorded-session
+            // source while the game is paused (its clock is the game's scaled time; the live sources use real time). Every 200th frame of a 90 Hz session is fed twice:
             // on the repeat the shoulders stay where they were (the held shrug is neither dropped nor released).
             string session = Sessions.Simulate("mocapbank_30fps.bvh", new SimulationOptions { Rate = 90, Seed = 3 });
             using SessionReader reader = Sessions.Read(session);

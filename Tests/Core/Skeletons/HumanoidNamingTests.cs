@@ -278,5 +278,35 @@ namespace AvatarGo.Core.Tests
             Assert.That(bandai.MissingRequired(), Is.Empty);
             Expect(bandai, "LeftShoulder=Shoulder_L", "LeftUpperArm=UpperArm_L", "RightLowerArm=LowerArm_R", "LeftToes=Toes_L");
         }
+
+        [Test]
+        public void CharacterCreatorNames()
+        {
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                "RL_BoneRoot", "CC_Base_Hip<RL_BoneRoot", "CC_Base_Pelvis<CC_Base_Hip", "CC_Base_Waist<CC_Base_Hip", "CC_Base_Spine01<CC_Base_Waist",
+                "CC_Base_Spine02<CC_Base_Spine01", "CC_Base_NeckTwist01<CC_Base_Spine02", "CC_Base_NeckTwist02<CC_Base_NeckTwist01", "CC_Base_Head<CC_Base_NeckTwist02",
+                "CC_Base_L_Clavicle<CC_Base_Spine02", "CC_Base_L_Upperarm<CC_Base_L_Clavicle", "CC_Base_L_Forearm<CC_Base_L_Upperarm", "CC_Base_L_Hand<CC_Base_L_Forearm",
+                "CC_Base_R_Clavicle<CC_Base_Spine02", "CC_Base_R_Upperarm<CC_Base_R_Clavicle", "CC_Base_R_Forearm<CC_Base_R_Upperarm", "CC_Base_R_Hand<CC_Base_R_Forearm",
+                "CC_Base_L_Thigh<CC_Base_Pelvis", "CC_Base_L_Calf<CC_Base_L_Thigh", "CC_Base_L_Foot<CC_Base_L_Calf", "CC_Base_L_ToeBase<CC_Base_L_Foot",
+                "CC_Base_R_Thigh<CC_Base_Pelvis", "CC_Base_R_Calf<CC_Base_R_Thigh", "CC_Base_R_Foot<CC_Base_R_Calf"));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Expect(map, "Hips=CC_Base_Hip", "Spine=CC_Base_Waist", "Chest=CC_Base_Spine01", "UpperChest=CC_Base_Spine02", "Neck=CC_Base_NeckTwist01",
+                "Head=CC_Base_Head", "LeftShoulder=CC_Base_L_Clavicle", "LeftUpperArm=CC_Base_L_Upperarm", "LeftUpperLeg=CC_Base_L_Thigh",
+                "LeftLowerLeg=CC_Base_L_Calf", "LeftToes=CC_Base_L_ToeBase");
+        }
+
+        [Test]
+        public void APelvisAboveTheHipsLeavesTheHipsTheHips()
+        {
+            // Found in review: the shallowest of hips/pelvis/hip once took a Pelvis above a Hips joint.
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                "Armature", "Pelvis<Armature", "Hips<Pelvis", "Spine<Hips", "Chest<Spine", "Neck<Chest", "Head<Neck",
+                "LeftShoulder<Chest", "LeftArm<LeftShoulder", "LeftForeArm<LeftArm", "LeftHand<LeftForeArm",
+                "RightShoulder<Chest", "RightArm<RightShoulder", "RightForeArm<RightArm", "RightHand<RightForeArm",
+                "LeftUpLeg<Hips", "LeftLeg<LeftUpLeg", "LeftAnkle<LeftLeg", "LeftFoot<LeftAnkle", "LeftToeBase<LeftFoot",
+                "RightUpLeg<Hips", "RightLeg<RightUpLeg", "RightFoot<RightLeg"));
+            // An ankle above a foot is the foot bone; the toe-named joint below stays the toes.
+            Expect(map, "Hips=Hips", "Spine=Spine", "Chest=Chest", "LeftFoot=LeftAnkle", "LeftToes=LeftToeBase", "RightFoot=RightFoot");
+        }
     }
 }

@@ -366,7 +366,7 @@ namespace AvatarGo.Core.Tests
         }
 
         /// <summary>
-        /// A frame in which no time passed (a repeated timestamp, or Unity's scaled time while paused) keeps the held shrug:
+        /// A frame in which no time passed (a repeated timestamp, or a recorded session replayed while the game is paused) keeps the held shrug:
         /// the shoulder does not move. Found in review: it once started such a frame from the calibration pose (the shoulder
         /// jumped 30 mm and back).
         /// </summary>

@@ -31,6 +31,8 @@ public sealed class SimulateCommand : ICommand
           --exercise-seconds S  after the walk-in, S seconds of the refinement exercise (arm circles and reaches
                               with the arms stretched, then squats) before the clip (default 0: none); evaluate
                               with --refine --exercise-seconds S
+          --keep-up           simulate the clip with +Y up as it is; by default a clip recorded with another
+                              axis up (a Z-up export) is stood up first, and the command says so
         Exit codes: 0 ok, 1 unreadable input, 2 bad arguments.
         """;
 
@@ -113,6 +115,7 @@ public sealed class SimulateCommand : ICommand
             MisalignmentYawDegrees = (float)a.Double("misalign-deg", 0),
             Controller = ControllerProfiles.Named(a.String("controller", ControllerProfiles.Default)),
             ExerciseSeconds = (float)a.Double("exercise-seconds", 0),
+            StandClipUp = !a.Flag("keep-up"),
         };
         if (!(o.ExerciseSeconds >= 0 && o.ExerciseSeconds <= 60)) throw new UsageException("--exercise-seconds must be between 0 and 60");
         if (!(o.Rate >= 10 && o.Rate <= 1000)) throw new UsageException("--rate must be between 10 and 1000 Hz");
