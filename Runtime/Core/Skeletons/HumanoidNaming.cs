@@ -14,8 +14,10 @@ namespace AvatarGo.Core
     /// (<c>LeftUpperArm</c>, <c>LeftLowerLeg</c>; Xsens MVN's <c>T8</c>, <c>LeftForeArm</c>; Bandai Namco's <c>UpperArm_L</c>),
     /// SMPL (<c>L_Collar</c>, <c>L_Shoulder</c> = upper arm, <c>L_Elbow</c>, <c>L_Knee</c>), VRoid/VRM
     /// (<c>J_Bip_C_Hips</c>, <c>J_Bip_L_UpperArm</c>), 3ds Max Biped (<c>Bip01_L_Clavicle</c>, <c>Bip01_L_Calf</c>), Character
-    /// Creator / iClone (<c>CC_Base_Hip</c>, <c>CC_Base_L_Upperarm</c>, <c>CC_Base_NeckTwist01</c>) and Daz Genesis (<c>hip</c>,
-    /// <c>lShldrBend</c>, <c>lForearmBend</c>, <c>lThighBend</c>, <c>lShin</c>, <c>neckLower</c>).
+    /// Creator / iClone (<c>CC_Base_Hip</c>, <c>CC_Base_L_Upperarm</c>, <c>CC_Base_NeckTwist01</c>), Daz Genesis (<c>hip</c>,
+    /// <c>lShldrBend</c>, <c>lForearmBend</c>, <c>lThighBend</c>, <c>lShin</c>, <c>neckLower</c>), HumanIK
+    /// (<c>Character1_LeftArm</c>), ARKit (<c>left_upLeg_joint</c>, <c>left_shoulder_1_joint</c>) and Meta
+    /// (<c>FullBody_LeftArmUpper</c>, <c>FullBody_LeftFootAnkle</c>).
     /// Explicit overrides win.
     /// </summary>
     /// <remarks>
@@ -75,13 +77,13 @@ namespace AvatarGo.Core
             {
                 bool left = side == Side.Left;
                 // Legs.
-                int upLeg = Find(skeleton, cores, sides, side, hips, "upleg", "upperleg", "thigh", "hip", "femur");
-                int lowLeg = Find(skeleton, cores, sides, side, upLeg, "leg", "lowerleg", "shin", "knee", "calf", "tibia");
+                int upLeg = Find(skeleton, cores, sides, side, hips, "upleg", "upperleg", "thigh", "hip", "femur", "legupper");
+                int lowLeg = Find(skeleton, cores, sides, side, upLeg, "leg", "lowerleg", "shin", "knee", "calf", "tibia", "leglower");
                 // An "ankle" above a "foot" is the foot bone (the shin ends there): the toes are a toe-named joint below it, else
                 // the "foot" (SMPL: L_Ankle, then L_Foot at the toes).
-                int foot = Find(skeleton, cores, sides, side, lowLeg, "foot", "ankle");
+                int foot = Find(skeleton, cores, sides, side, lowLeg, "foot", "ankle", "footankle");
                 int ankle = Find(skeleton, cores, sides, side, lowLeg, "ankle");
-                int toes = Find(skeleton, cores, sides, side, foot, "toebase", "toe", "toes", "ball", "toe0");
+                int toes = Find(skeleton, cores, sides, side, foot, "toebase", "toe", "toes", "ball", "toe0", "football");
                 if (ankle >= 0 && foot >= 0 && foot != ankle && skeleton.IsAncestorOrSelf(ankle, foot))
                 {
                     if (toes < 0) toes = foot;
@@ -94,16 +96,16 @@ namespace AvatarGo.Core
                 if (toes >= 0 && !skeleton.IsEndSite(toes)) Put(left ? HumanoidBone.LeftToes : HumanoidBone.RightToes, toes);
 
                 // Arms: is "shoulder" the clavicle or the upper arm on this side?
-                bool hasArm = FindAnywhere(cores, sides, side, "arm", "upperarm", "uparm") >= 0;
+                bool hasArm = FindAnywhere(cores, sides, side, "arm", "upperarm", "uparm", "armupper") >= 0;
                 int clavicle = hasArm
-                    ? Find(skeleton, cores, sides, side, hips, "shoulder", "clavicle", "collar")
+                    ? Find(skeleton, cores, sides, side, hips, "shoulder", "clavicle", "collar", "shoulder1")
                     : Find(skeleton, cores, sides, side, hips, "clavicle", "collar");
                 int upArm = hasArm
-                    ? Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "arm", "upperarm", "uparm")
+                    ? Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "arm", "upperarm", "uparm", "armupper")
                     : Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "shoulder", "humerus", "shldr");
-                int foreArm = Find(skeleton, cores, sides, side, upArm, "forearm", "lowerarm", "elbow", "radius");
+                int foreArm = Find(skeleton, cores, sides, side, upArm, "forearm", "lowerarm", "elbow", "radius", "armlower");
                 // A "wrist" above a "hand" (SMPL: L_Wrist, then L_Hand at the knuckles) is the hand bone.
-                int hand = Find(skeleton, cores, sides, side, foreArm, "hand", "wrist");
+                int hand = Find(skeleton, cores, sides, side, foreArm, "hand", "wrist", "handwrist");
                 int wrist = Find(skeleton, cores, sides, side, foreArm, "wrist");
                 if (wrist >= 0 && hand >= 0 && hand != wrist && skeleton.IsAncestorOrSelf(wrist, hand)) hand = wrist;
                 if (hand < 0) hand = EndSiteOf(skeleton, foreArm);
@@ -242,6 +244,7 @@ namespace AvatarGo.Core
         {
             int colon = name.LastIndexOf(':');
             string s = colon >= 0 ? name.Substring(colon + 1) : name;
+            s = StripRigAffixes(s);
             string lower = s.ToLowerInvariant();
             side = Side.None;
             // Daz: a lowercase l or r before a capitalised word (lShldrBend, rThighBend).
@@ -261,6 +264,23 @@ namespace AvatarGo.Core
         }
 
         private static readonly char[] Separators = { '_', ' ', '.', '-' };
+
+        // A namespace written with an underscore (HumanIK's Character1_, Meta's FullBody_) and ARKit's _joint suffix, which
+        // carry no side and no bone.
+        private static string StripRigAffixes(string name)
+        {
+            string lower = name.ToLowerInvariant();
+            if (lower.EndsWith("_joint", StringComparison.Ordinal) && name.Length > 6) { name = name.Substring(0, name.Length - 6); lower = lower.Substring(0, lower.Length - 6); }
+            int underscore = lower.IndexOf('_');
+            if (underscore > 0 && underscore < lower.Length - 1)
+            {
+                string prefix = lower.Substring(0, underscore);
+                bool character = prefix.StartsWith("character", StringComparison.Ordinal);
+                for (int i = 9; character && i < prefix.Length; i++) character = prefix[i] >= '0' && prefix[i] <= '9';
+                if (character || prefix == "fullbody") name = name.Substring(underscore + 1);
+            }
+            return name;
+        }
 
         // A side token after a rig prefix ("j_bip_l_upperarm", "bip01_l_thigh", "cc_base_l_thigh"; "c" marks the centre), or a
         // Biped or Character Creator prefix alone ("bip01_pelvis", "cc_base_hip"): true with the side and the name after the token. A first token "l"/"r" is left to the

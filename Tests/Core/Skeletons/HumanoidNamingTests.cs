@@ -308,5 +308,46 @@ namespace AvatarGo.Core.Tests
             // An ankle above a foot is the foot bone; the toe-named joint below stays the toes.
             Expect(map, "Hips=Hips", "Spine=Spine", "Chest=Chest", "LeftFoot=LeftAnkle", "LeftToes=LeftToeBase", "RightFoot=RightFoot");
         }
+
+        [Test]
+        public void HumanIkArKitAndMetaNames()
+        {
+            HumanoidMap humanIk = HumanoidNaming.Detect(Build(
+                "Character1_Reference", "Character1_Hips<Character1_Reference", "Character1_Spine<Character1_Hips", "Character1_Spine1<Character1_Spine",
+                "Character1_Neck<Character1_Spine1", "Character1_Head<Character1_Neck",
+                "Character1_LeftShoulder<Character1_Spine1", "Character1_LeftArm<Character1_LeftShoulder", "Character1_LeftForeArm<Character1_LeftArm", "Character1_LeftHand<Character1_LeftForeArm",
+                "Character1_RightShoulder<Character1_Spine1", "Character1_RightArm<Character1_RightShoulder", "Character1_RightForeArm<Character1_RightArm", "Character1_RightHand<Character1_RightForeArm",
+                "Character1_LeftUpLeg<Character1_Hips", "Character1_LeftLeg<Character1_LeftUpLeg", "Character1_LeftFoot<Character1_LeftLeg", "Character1_LeftToeBase<Character1_LeftFoot",
+                "Character1_RightUpLeg<Character1_Hips", "Character1_RightLeg<Character1_RightUpLeg", "Character1_RightFoot<Character1_RightLeg"));
+            Assert.That(humanIk.MissingRequired(), Is.Empty);
+            Expect(humanIk, "Hips=Character1_Hips", "Spine=Character1_Spine", "LeftShoulder=Character1_LeftShoulder", "LeftUpperArm=Character1_LeftArm",
+                "LeftLowerLeg=Character1_LeftLeg", "LeftToes=Character1_LeftToeBase", "Head=Character1_Head");
+
+            HumanoidMap arKit = HumanoidNaming.Detect(Build(
+                "root", "hips_joint<root", "spine_1_joint<hips_joint", "spine_2_joint<spine_1_joint", "spine_3_joint<spine_2_joint",
+                "neck_1_joint<spine_3_joint", "head_joint<neck_1_joint",
+                "left_shoulder_1_joint<spine_3_joint", "left_arm_joint<left_shoulder_1_joint", "left_forearm_joint<left_arm_joint", "left_hand_joint<left_forearm_joint",
+                "right_shoulder_1_joint<spine_3_joint", "right_arm_joint<right_shoulder_1_joint", "right_forearm_joint<right_arm_joint", "right_hand_joint<right_forearm_joint",
+                "left_upLeg_joint<hips_joint", "left_leg_joint<left_upLeg_joint", "left_foot_joint<left_leg_joint", "left_toes_joint<left_foot_joint",
+                "right_upLeg_joint<hips_joint", "right_leg_joint<right_upLeg_joint", "right_foot_joint<right_leg_joint"));
+            Assert.That(arKit.MissingRequired(), Is.Empty);
+            Expect(arKit, "Hips=hips_joint", "Spine=spine_1_joint", "Neck=neck_1_joint", "Head=head_joint", "LeftShoulder=left_shoulder_1_joint",
+                "LeftUpperArm=left_arm_joint", "LeftUpperLeg=left_upLeg_joint", "LeftToes=left_toes_joint");
+
+            HumanoidMap meta = HumanoidNaming.Detect(Build(
+                "FullBody_Root", "FullBody_Hips<FullBody_Root", "FullBody_SpineLower<FullBody_Hips", "FullBody_SpineMiddle<FullBody_SpineLower",
+                "FullBody_SpineUpper<FullBody_SpineMiddle", "FullBody_Chest<FullBody_SpineUpper", "FullBody_Neck<FullBody_Chest", "FullBody_Head<FullBody_Neck",
+                "FullBody_LeftShoulder<FullBody_Chest", "FullBody_LeftScapula<FullBody_LeftShoulder", "FullBody_LeftArmUpper<FullBody_LeftScapula",
+                "FullBody_LeftArmLower<FullBody_LeftArmUpper", "FullBody_LeftHandWristTwist<FullBody_LeftArmLower", "FullBody_LeftHandWrist<FullBody_LeftHandWristTwist",
+                "FullBody_RightShoulder<FullBody_Chest", "FullBody_RightScapula<FullBody_RightShoulder", "FullBody_RightArmUpper<FullBody_RightScapula",
+                "FullBody_RightArmLower<FullBody_RightArmUpper", "FullBody_RightHandWrist<FullBody_RightArmLower",
+                "FullBody_LeftLegUpper<FullBody_Hips", "FullBody_LeftLegLower<FullBody_LeftLegUpper", "FullBody_LeftFootAnkleTwist<FullBody_LeftLegLower",
+                "FullBody_LeftFootAnkle<FullBody_LeftFootAnkleTwist", "FullBody_LeftFootBall<FullBody_LeftFootAnkle",
+                "FullBody_RightLegUpper<FullBody_Hips", "FullBody_RightLegLower<FullBody_RightLegUpper", "FullBody_RightFootAnkle<FullBody_RightLegLower"));
+            Assert.That(meta.MissingRequired(), Is.Empty);
+            Expect(meta, "Hips=FullBody_Hips", "Spine=FullBody_SpineLower", "UpperChest=FullBody_Chest", "LeftShoulder=FullBody_LeftShoulder",
+                "LeftUpperArm=FullBody_LeftArmUpper", "LeftLowerArm=FullBody_LeftArmLower", "LeftHand=FullBody_LeftHandWrist",
+                "LeftUpperLeg=FullBody_LeftLegUpper", "LeftLowerLeg=FullBody_LeftLegLower", "LeftFoot=FullBody_LeftFootAnkle", "LeftToes=FullBody_LeftFootBall");
+        }
     }
 }
