@@ -17,7 +17,8 @@ namespace AvatarGo.Core
     /// Creator / iClone (<c>CC_Base_Hip</c>, <c>CC_Base_L_Upperarm</c>, <c>CC_Base_NeckTwist01</c>), Daz Genesis (<c>hip</c>,
     /// <c>lShldrBend</c>, <c>lForearmBend</c>, <c>lThighBend</c>, <c>lShin</c>, <c>neckLower</c>), HumanIK
     /// (<c>Character1_LeftArm</c>), ARKit (<c>left_upLeg_joint</c>, <c>left_shoulder_1_joint</c>) and Meta
-    /// (<c>FullBody_LeftArmUpper</c>, <c>FullBody_LeftFootAnkle</c>).
+    /// (<c>FullBody_LeftArmUpper</c>, <c>FullBody_LeftFootAnkle</c>), and the CMU database's ASF names (<c>root</c>,
+    /// <c>lowerback</c>, <c>lclavicle</c>, <c>lhumerus</c>, <c>lradius</c>, <c>lwrist</c>, <c>lfemur</c>, <c>ltibia</c>).
     /// Explicit overrides win.
     /// </summary>
     /// <remarks>
@@ -139,7 +140,7 @@ namespace AvatarGo.Core
             }
 
             // Neck and head.
-            int neck = Find(skeleton, cores, sides, Side.None, hips, "neck", "neck1", "neck01", "necklower", "necktwist01");
+            int neck = Find(skeleton, cores, sides, Side.None, hips, "neck", "neck1", "neck01", "necklower", "necktwist01", "lowerneck");
             int head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "head");
             if (head < 0) head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "face");
             if (head < 0 && neck >= 0) head = EndSiteOf(skeleton, neck);
@@ -247,8 +248,10 @@ namespace AvatarGo.Core
             s = StripRigAffixes(s);
             string lower = s.ToLowerInvariant();
             side = Side.None;
-            // Daz: a lowercase l or r before a capitalised word (lShldrBend, rThighBend).
+            // Daz: a lowercase l or r before a capitalised word (lShldrBend, rThighBend); CMU's ASF names: l or r before a bone
+            // (lhumerus, rfemur).
             if (s.Length >= 3 && (s[0] == 'l' || s[0] == 'r') && char.IsUpper(s[1]) && char.IsLower(s[2])) { side = s[0] == 'l' ? Side.Left : Side.Right; lower = lower.Substring(1); }
+            else if (lower.Length > 1 && (lower[0] == 'l' || lower[0] == 'r') && Array.IndexOf(AsfBones, lower.Substring(1)) >= 0) { side = lower[0] == 'l' ? Side.Left : Side.Right; lower = lower.Substring(1); }
             else if (SideToken(lower, out Side tokenSide, out string rest)) { side = tokenSide; lower = rest; }
             else if (lower.StartsWith("left", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(4); }
             else if (lower.StartsWith("right", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(5); }
@@ -264,6 +267,9 @@ namespace AvatarGo.Core
         }
 
         private static readonly char[] Separators = { '_', ' ', '.', '-' };
+
+        // The sided bones of the CMU database's ASF skeleton, named after the bone (lhumerus, rtibia).
+        private static readonly string[] AsfBones = { "clavicle", "humerus", "radius", "wrist", "hand", "fingers", "thumb", "hipjoint", "femur", "tibia", "foot", "toes" };
 
         // A namespace written with an underscore (HumanIK's Character1_, Meta's FullBody_) and ARKit's _joint suffix, which
         // carry no side and no bone.

@@ -349,5 +349,20 @@ namespace AvatarGo.Core.Tests
                 "LeftUpperArm=FullBody_LeftArmUpper", "LeftLowerArm=FullBody_LeftArmLower", "LeftHand=FullBody_LeftHandWrist",
                 "LeftUpperLeg=FullBody_LeftLegUpper", "LeftLowerLeg=FullBody_LeftLegLower", "LeftFoot=FullBody_LeftFootAnkle", "LeftToes=FullBody_LeftFootBall");
         }
+
+        [Test]
+        public void CmuAsfNames()
+        {
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                "root", "lowerback<root", "upperback<lowerback", "thorax<upperback", "lowerneck<thorax", "upperneck<lowerneck", "head<upperneck",
+                "lclavicle<thorax", "lhumerus<lclavicle", "lradius<lhumerus", "lwrist<lradius", "lhand<lwrist", "lfingers<lhand", "lthumb<lwrist",
+                "rclavicle<thorax", "rhumerus<rclavicle", "rradius<rhumerus", "rwrist<rradius", "rhand<rwrist",
+                "lhipjoint<root", "lfemur<lhipjoint", "ltibia<lfemur", "lfoot<ltibia", "ltoes<lfoot",
+                "rhipjoint<root", "rfemur<rhipjoint", "rtibia<rfemur", "rfoot<rtibia", "rtoes<rfoot"));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Expect(map, "Hips=root", "Spine=lowerback", "Chest=upperback", "UpperChest=thorax", "Neck=lowerneck", "Head=head",
+                "LeftShoulder=lclavicle", "LeftUpperArm=lhumerus", "LeftLowerArm=lradius", "LeftHand=lwrist", "RightHand=rwrist",
+                "LeftUpperLeg=lfemur", "LeftLowerLeg=ltibia", "LeftFoot=lfoot", "LeftToes=ltoes", "RightUpperLeg=rfemur");
+        }
     }
 }
