@@ -12,11 +12,14 @@ namespace AvatarGo.Core.Tests
     /// </summary>
     public class UpAxisTests
     {
-        private static BvhClip Turned(BvhClip clip, Quaternion turn) => Sessions.Rewrite(clip, (f, pose) =>
+        private static BvhClip Turned(BvhClip clip, Quaternion turn) => Sessions.Rewrite(clip, (f, pose) => TurnRoots(pose, turn));
+
+        // Turns the whole body about the origin: each root's local pose.
+        private static void TurnRoots(SkeletonPose pose, Quaternion turn)
         {
             for (int j = 0; j < pose.Local.Length; j++)
-                if (clip.Skeleton.GetParent(j) < 0) pose.Local[j] = new RigidPose(Vector3.Transform(pose.Local[j].Position, turn), Quaternion.Normalize(turn * pose.Local[j].Rotation));
-        });
+                if (pose.Skeleton.GetParent(j) < 0) pose.Local[j] = new RigidPose(Vector3.Transform(pose.Local[j].Position, turn), Quaternion.Normalize(turn * pose.Local[j].Rotation));
+        }
 
         private static (EvaluationReport report, Quaternion upright) Evaluate(BvhClip clip)
         {
@@ -59,9 +62,7 @@ namespace AvatarGo.Core.Tests
             int turnedFrames = (int)(share * clip.FrameCount);
             BvhClip partly = Sessions.Rewrite(clip, (f, pose) =>
             {
-                if (f >= turnedFrames) return;
-                for (int j = 0; j < pose.Local.Length; j++)
-                    if (clip.Skeleton.GetParent(j) < 0) pose.Local[j] = new RigidPose(Vector3.Transform(pose.Local[j].Position, turn), Quaternion.Normalize(turn * pose.Local[j].Rotation));
+                if (f < turnedFrames) TurnRoots(pose, turn);
             });
             Assert.That(new SessionSimulator(partly).Upright, Is.EqualTo(Quaternion.Identity));
             Assert.That(new SessionSimulator(Turned(clip, Rotations.AngleAxis(90f, Vector3.UnitX)), new SimulationOptions { StandClipUp = false }).Upright,
