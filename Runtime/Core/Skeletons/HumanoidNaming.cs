@@ -18,15 +18,19 @@ namespace AvatarGo.Core
     /// <c>lShldrBend</c>, <c>lForearmBend</c>, <c>lThighBend</c>, <c>lShin</c>, <c>neckLower</c>), HumanIK
     /// (<c>Character1_LeftArm</c>), ARKit (<c>left_upLeg_joint</c>, <c>left_shoulder_1_joint</c>) and Meta
     /// (<c>FullBody_LeftArmUpper</c>, <c>FullBody_LeftFootAnkle</c>), and the CMU database's ASF names (<c>root</c>,
-    /// <c>lowerback</c>, <c>lclavicle</c>, <c>lhumerus</c>, <c>lradius</c>, <c>lwrist</c>, <c>lfemur</c>, <c>ltibia</c>).
-    /// Explicit overrides win.
+    /// <c>lowerback</c>, <c>lclavicle</c>, <c>lhumerus</c>, <c>lradius</c>, <c>lwrist</c>, <c>lfemur</c>, <c>ltibia</c>),
+    /// Rigify's deform bones (<c>DEF-upper_arm.L</c>, the neck and head <c>DEF-spine.004</c> and <c>DEF-spine.006</c>) and
+    /// MakeHuman (<c>upperarm01.L</c>, <c>lowerleg01.L</c>, <c>clavicle.L</c>). Explicit overrides win.
     /// </summary>
     /// <remarks>
     /// Rules worth knowing: <c>Shoulder</c> is the clavicle when the same side also has an <c>Arm</c>/<c>UpperArm</c>
     /// joint, otherwise (CMU, with a <c>Collar</c>) the upper arm. The spine chain is the unsided joints between
     /// the hips and the neck: the first is Spine, the second Chest, the third UpperChest. When a rig has no hand
     /// (or foot, or head) joint, the End Site that ends the forearm (shin, neck) plays it, so that every required
-    /// bone is found on rigs like Rigify exports whose forearm ends in an End Site.
+    /// bone is found on rigs like Rigify exports whose forearm ends in an End Site. A limb name missing as it is is tried as
+    /// the first of numbered segments (<c>upperarm01</c>). Without a neck or head name, the spine goes on above the joint
+    /// that carries the arms, through joints named like it (else through single children): the first is the neck, the last
+    /// the head.
     /// </remarks>
     public static class HumanoidNaming
     {
@@ -68,8 +72,10 @@ namespace AvatarGo.Core
 
             // Hips: a "hips" joint, else the unsided pelvis/hip joint nearest the root (Daz and Character Creator have a "hip"
             // above their "pelvis", the legs under the one and the spine under the other), else the first root with children.
+            // Without such a name (Rigify's DEF-spine, MakeHuman's root), the joint both thighs hang from, else the first root.
             int hips = Find(skeleton, cores, sides, Side.None, -1, "hips");
             if (hips < 0) hips = Shallowest(skeleton, cores, sides, "pelvis", "hip");
+            if (hips < 0) hips = CommonAncestor(skeleton, Find(skeleton, cores, sides, Side.Left, -1, UpperLegKeys), Find(skeleton, cores, sides, Side.Right, -1, UpperLegKeys), required: true);
             if (hips < 0) hips = 0;
             Put(HumanoidBone.Hips, hips);
             hips = bones.TryGetValue(HumanoidBone.Hips, out int h) ? h : hips;
@@ -78,7 +84,7 @@ namespace AvatarGo.Core
             {
                 bool left = side == Side.Left;
                 // Legs.
-                int upLeg = Find(skeleton, cores, sides, side, hips, "upleg", "upperleg", "thigh", "hip", "femur", "legupper");
+                int upLeg = Find(skeleton, cores, sides, side, hips, UpperLegKeys);
                 int lowLeg = Find(skeleton, cores, sides, side, upLeg, "leg", "lowerleg", "shin", "knee", "calf", "tibia", "leglower");
                 // An "ankle" above a "foot" is the foot bone (the shin ends there): the toes are a toe-named joint below it, else
                 // the "foot" (SMPL: L_Ankle, then L_Foot at the toes).
@@ -97,10 +103,10 @@ namespace AvatarGo.Core
                 if (toes >= 0 && !skeleton.IsEndSite(toes)) Put(left ? HumanoidBone.LeftToes : HumanoidBone.RightToes, toes);
 
                 // Arms: is "shoulder" the clavicle or the upper arm on this side?
+                // A "clavicle" or "collar" is the clavicle even beside a "shoulder" (MakeHuman: clavicle, shoulder01, upperarm01).
                 bool hasArm = FindAnywhere(cores, sides, side, "arm", "upperarm", "uparm", "armupper") >= 0;
-                int clavicle = hasArm
-                    ? Find(skeleton, cores, sides, side, hips, "shoulder", "clavicle", "collar", "shoulder1")
-                    : Find(skeleton, cores, sides, side, hips, "clavicle", "collar");
+                int clavicle = Find(skeleton, cores, sides, side, hips, "clavicle", "collar");
+                if (clavicle < 0 && hasArm) clavicle = Find(skeleton, cores, sides, side, hips, "shoulder", "shoulder1");
                 int upArm = hasArm
                     ? Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "arm", "upperarm", "uparm", "armupper")
                     : Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "shoulder", "humerus", "shldr");
@@ -144,6 +150,7 @@ namespace AvatarGo.Core
             int head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "head");
             if (head < 0) head = Find(skeleton, cores, sides, Side.None, neck >= 0 ? neck : hips, "face");
             if (head < 0 && neck >= 0) head = EndSiteOf(skeleton, neck);
+            if (neck < 0 && head < 0) SpineAboveTheArms(skeleton, cores, sides, used, ArmCarrier(skeleton, bones), out neck, out head);
             Put(HumanoidBone.Neck, neck);
             Put(HumanoidBone.Head, head);
             int jaw = Find(skeleton, cores, sides, Side.None, head, "jaw");
@@ -170,8 +177,53 @@ namespace AvatarGo.Core
             return new HumanoidMap(skeleton, pairs);
         }
 
-        private static int CommonAncestor(Skeleton s, int a, int b)
+        // The joint both arms hang from (the parent of the clavicles, else of the upper arms), or -1.
+        private static int ArmCarrier(Skeleton s, Dictionary<HumanoidBone, int> bones)
         {
+            int Parent(HumanoidBone clavicle, HumanoidBone upperArm) =>
+                bones.TryGetValue(clavicle, out int c) ? s.GetParent(c) : bones.TryGetValue(upperArm, out int a) ? s.GetParent(a) : -1;
+            int left = Parent(HumanoidBone.LeftShoulder, HumanoidBone.LeftUpperArm), right = Parent(HumanoidBone.RightShoulder, HumanoidBone.RightUpperArm);
+            return left >= 0 && right >= 0 ? CommonAncestor(s, left, right, required: true) : -1;
+        }
+
+        // A spine named without a neck or a head (Rigify's DEF-spine.004 to .006, any numbered chain): it goes on above the
+        // joint that carries the arms, through unsided joints named like that joint (else through single children); the
+        // first is the neck and the last the head, a chain of one joint the head alone.
+        private static void SpineAboveTheArms(Skeleton s, string[] cores, Side[] sides, HashSet<int> used, int carrier, out int neck, out int head)
+        {
+            neck = head = -1;
+            if (carrier < 0) return;
+            string stem = Stem(cores[carrier]);
+            bool byName = stem.Length > 0 && NextOnSpine(s, cores, sides, used, carrier, stem) >= 0;
+            var chain = new List<int>();
+            for (int next = NextOnSpine(s, cores, sides, used, carrier, byName ? stem : null); next >= 0; next = NextOnSpine(s, cores, sides, used, next, byName ? stem : null))
+                chain.Add(next);
+            if (chain.Count == 0) return;
+            head = chain[chain.Count - 1];
+            if (chain.Count > 1) neck = chain[0];
+        }
+
+        // The child of `at` the spine goes on through: the one unsided, unused joint (not an End Site) named with `stem`, or
+        // with no stem the only unsided, unused child; -1 when there is none or the choice is not unique.
+        private static int NextOnSpine(Skeleton s, string[] cores, Side[] sides, HashSet<int> used, int at, string stem)
+        {
+            int found = -1, count = 0;
+            for (int j = at + 1; j < s.JointCount; j++)
+            {
+                if (s.GetParent(j) != at || s.IsEndSite(j) || sides[j] != Side.None || used.Contains(j)) continue;
+                if (stem != null && Stem(cores[j]) != stem) continue;
+                found = j;
+                count++;
+            }
+            return count == 1 ? found : -1;
+        }
+
+        // A core name without its digits ("spine004" → "spine").
+        private static string Stem(string core) => core.TrimEnd('0', '1', '2', '3', '4', '5', '6', '7', '8', '9');
+
+        private static int CommonAncestor(Skeleton s, int a, int b, bool required = false)
+        {
+            if (required && (a < 0 || b < 0)) return -1;
             if (a < 0) return b;
             if (b < 0) return a;
             for (int x = a; x >= 0; x = s.GetParent(x))
@@ -189,14 +241,21 @@ namespace AvatarGo.Core
 
         // The first joint (in hierarchy order) below `under` (any depth; anywhere when under is -1) on the
         // given side whose core name equals one of the keys, trying keys in order of preference.
+        // A name missing that way is tried again as the first of numbered segments (MakeHuman's upperarm01, lowerleg01).
         private static int Find(Skeleton s, string[] cores, Side[] sides, Side side, int under, params string[] keys)
         {
-            foreach (string key in keys)
-                for (int j = 0; j < cores.Length; j++)
-                    if (sides[j] == side && cores[j] == key && !s.IsEndSite(j) && (under < 0 || (j != under && s.IsAncestorOrSelf(under, j))))
-                        return j;
+            foreach (string suffix in SegmentSuffixes)
+                foreach (string key in keys)
+                    for (int j = 0; j < cores.Length; j++)
+                        if (sides[j] == side && IsNamed(cores[j], key, suffix) && !s.IsEndSite(j) && (under < 0 || (j != under && s.IsAncestorOrSelf(under, j))))
+                            return j;
             return -1;
         }
+
+        // The exact name first, then the first of numbered segments.
+        private static readonly string[] SegmentSuffixes = { "", "01", "001" };
+
+        private static readonly string[] UpperLegKeys = { "upleg", "upperleg", "thigh", "hip", "femur", "legupper" };
 
         // The unsided joint whose core name is one of the keys with the fewest ancestors (the first in hierarchy order among
         // equals), or -1.
@@ -215,11 +274,16 @@ namespace AvatarGo.Core
 
         private static int FindAnywhere(string[] cores, Side[] sides, Side side, params string[] keys)
         {
-            foreach (string key in keys)
-                for (int j = 0; j < cores.Length; j++)
-                    if (sides[j] == side && cores[j] == key) return j;
+            foreach (string suffix in SegmentSuffixes)
+                foreach (string key in keys)
+                    for (int j = 0; j < cores.Length; j++)
+                        if (sides[j] == side && IsNamed(cores[j], key, suffix)) return j;
             return -1;
         }
+
+        // core == key + suffix, without building the string.
+        private static bool IsNamed(string core, string key, string suffix) =>
+            core.Length == key.Length + suffix.Length && core.StartsWith(key, StringComparison.Ordinal) && core.EndsWith(suffix, StringComparison.Ordinal);
 
         private static int FindFinger(Skeleton s, string[] cores, Side[] sides, Side side, int under, string[] fingers, int number)
         {
@@ -271,11 +335,12 @@ namespace AvatarGo.Core
         // The sided bones of the CMU database's ASF skeleton, named after the bone (lhumerus, rtibia).
         private static readonly string[] AsfBones = { "clavicle", "humerus", "radius", "wrist", "hand", "fingers", "thumb", "hipjoint", "femur", "tibia", "foot", "toes" };
 
-        // A namespace written with an underscore (HumanIK's Character1_, Meta's FullBody_) and ARKit's _joint suffix, which
-        // carry no side and no bone.
+        // Rigify's DEF- prefix, a namespace written with an underscore (HumanIK's Character1_, Meta's FullBody_) and ARKit's
+        // _joint suffix, which carry no side and no bone.
         private static string StripRigAffixes(string name)
         {
             string lower = name.ToLowerInvariant();
+            if (lower.StartsWith("def-", StringComparison.Ordinal) && name.Length > 4) { name = name.Substring(4); lower = lower.Substring(4); } // Rigify's deform bones
             if (lower.EndsWith("_joint", StringComparison.Ordinal) && name.Length > 6) { name = name.Substring(0, name.Length - 6); lower = lower.Substring(0, lower.Length - 6); }
             int underscore = lower.IndexOf('_');
             if (underscore > 0 && underscore < lower.Length - 1)

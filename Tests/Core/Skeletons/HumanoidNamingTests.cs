@@ -140,6 +140,70 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void RigifyDeformBones_NumberedSpineTwistSegmentsAndAFloorRoot()
+        {
+            // A Rigify rig exported with its deform bones only: every name has DEF-, the neck and head are spine.004 and
+            // spine.006, the limbs have .001 twist segments, and a floor-level root sits above the spine.
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                "root", "DEF-spine<root", "DEF-pelvis.L<DEF-spine", "DEF-pelvis.R<DEF-spine",
+                "DEF-spine.001<DEF-spine", "DEF-spine.002<DEF-spine.001", "DEF-spine.003<DEF-spine.002",
+                "DEF-spine.004<DEF-spine.003", "DEF-spine.005<DEF-spine.004", "DEF-spine.006<DEF-spine.005",
+                "DEF-jaw<DEF-spine.006", "DEF-eye.L<DEF-spine.006", "DEF-eye.R<DEF-spine.006", "DEF-breast.L<DEF-spine.003",
+                "DEF-shoulder.L<DEF-spine.003", "DEF-upper_arm.L<DEF-shoulder.L", "DEF-upper_arm.L.001<DEF-upper_arm.L",
+                "DEF-forearm.L<DEF-upper_arm.L.001", "DEF-forearm.L.001<DEF-forearm.L", "DEF-hand.L<DEF-forearm.L.001",
+                "DEF-f_index.01.L<DEF-hand.L", "DEF-thumb.01.L<DEF-hand.L",
+                "DEF-shoulder.R<DEF-spine.003", "DEF-upper_arm.R<DEF-shoulder.R", "DEF-upper_arm.R.001<DEF-upper_arm.R",
+                "DEF-forearm.R<DEF-upper_arm.R.001", "DEF-forearm.R.001<DEF-forearm.R", "DEF-hand.R<DEF-forearm.R.001",
+                "DEF-thigh.L<DEF-spine", "DEF-thigh.L.001<DEF-thigh.L", "DEF-shin.L<DEF-thigh.L.001", "DEF-shin.L.001<DEF-shin.L",
+                "DEF-foot.L<DEF-shin.L.001", "DEF-toe.L<DEF-foot.L",
+                "DEF-thigh.R<DEF-spine", "DEF-thigh.R.001<DEF-thigh.R", "DEF-shin.R<DEF-thigh.R.001", "DEF-shin.R.001<DEF-shin.R",
+                "DEF-foot.R<DEF-shin.R.001", "DEF-toe.R<DEF-foot.R"));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Expect(map, "Hips=DEF-spine", "Spine=DEF-spine.001", "Chest=DEF-spine.002", "UpperChest=DEF-spine.003",
+                "Neck=DEF-spine.004", "Head=DEF-spine.006", "LeftEye=DEF-eye.L", "Jaw=DEF-jaw",
+                "LeftShoulder=DEF-shoulder.L", "LeftUpperArm=DEF-upper_arm.L", "LeftLowerArm=DEF-forearm.L", "LeftHand=DEF-hand.L",
+                "LeftIndexProximal=DEF-f_index.01.L", "LeftThumbProximal=DEF-thumb.01.L", "RightLowerArm=DEF-forearm.R",
+                "LeftUpperLeg=DEF-thigh.L", "LeftLowerLeg=DEF-shin.L", "LeftFoot=DEF-foot.L", "LeftToes=DEF-toe.L",
+                "RightUpperLeg=DEF-thigh.R", "RightLowerLeg=DEF-shin.R", "RightFoot=DEF-foot.R");
+        }
+
+        [Test]
+        public void MakeHumanNames_ClavicleBesideAShoulderAndNumberedSegments()
+        {
+            // MakeHuman's default skeleton: the limbs in numbered segments (upperarm01, upperarm02), a shoulder01 between the
+            // clavicle and the upper arm, five spine joints counting down from the hips and a root at the pelvis.
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                "root", "spine05<root", "spine04<spine05", "spine03<spine04", "spine02<spine03", "spine01<spine02",
+                "neck01<spine01", "neck02<neck01", "neck03<neck02", "head<neck03", "eye.L<head", "eye.R<head",
+                "clavicle.L<spine01", "shoulder01.L<clavicle.L", "upperarm01.L<shoulder01.L", "upperarm02.L<upperarm01.L",
+                "lowerarm01.L<upperarm02.L", "lowerarm02.L<lowerarm01.L", "wrist.L<lowerarm02.L",
+                "clavicle.R<spine01", "shoulder01.R<clavicle.R", "upperarm01.R<shoulder01.R", "upperarm02.R<upperarm01.R",
+                "lowerarm01.R<upperarm02.R", "lowerarm02.R<lowerarm01.R", "wrist.R<lowerarm02.R",
+                "pelvis.L<root", "upperleg01.L<pelvis.L", "upperleg02.L<upperleg01.L", "lowerleg01.L<upperleg02.L",
+                "lowerleg02.L<lowerleg01.L", "foot.L<lowerleg02.L", "toe1-1.L<foot.L",
+                "pelvis.R<root", "upperleg01.R<pelvis.R", "upperleg02.R<upperleg01.R", "lowerleg01.R<upperleg02.R",
+                "lowerleg02.R<lowerleg01.R", "foot.R<lowerleg02.R"));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Expect(map, "Hips=root", "Spine=spine05", "Chest=spine04", "UpperChest=spine01", "Neck=neck01", "Head=head",
+                "LeftShoulder=clavicle.L", "LeftUpperArm=upperarm01.L", "LeftLowerArm=lowerarm01.L", "LeftHand=wrist.L",
+                "RightShoulder=clavicle.R", "RightUpperArm=upperarm01.R", "LeftUpperLeg=upperleg01.L", "LeftLowerLeg=lowerleg01.L",
+                "LeftFoot=foot.L", "RightUpperLeg=upperleg01.R", "RightLowerLeg=lowerleg01.R", "RightFoot=foot.R", "LeftEye=eye.L");
+        }
+
+        [Test]
+        public void ASpineWithoutNeckOrHeadNamesEndsInTheHead()
+        {
+            // Names the rules do not know above the arms: the spine goes on through the carrier's only unsided child.
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                "Hips", "Spine<Hips", "Chest<Spine", "Bone.007<Chest", "Bone.008<Bone.007", "Bone.008_end!<Bone.008",
+                "LeftShoulder<Chest", "LeftArm<LeftShoulder", "LeftForeArm<LeftArm", "LeftHand<LeftForeArm",
+                "RightShoulder<Chest", "RightArm<RightShoulder", "RightForeArm<RightArm", "RightHand<RightForeArm",
+                "LeftUpLeg<Hips", "LeftLeg<LeftUpLeg", "LeftFoot<LeftLeg", "RightUpLeg<Hips", "RightLeg<RightUpLeg", "RightFoot<RightLeg"));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Expect(map, "Neck=Bone.007", "Head=Bone.008", "Spine=Spine", "Chest=Chest");
+        }
+
+        [Test]
         public void EndSitesStandInForAMissingHandFootAndHead()
         {
             // A forearm, a shin and a neck that end in End Sites: their ends are the wrist, ankle and head pivot.
