@@ -18,6 +18,8 @@ namespace AvatarGo.Simulation
         public static readonly DeviceRole[] DeviceRoles =
             { DeviceRole.Head, DeviceRole.RightHand, DeviceRole.LeftHand, DeviceRole.LeftFoot, DeviceRole.Pelvis, DeviceRole.RightFoot };
 
+        private const float BentKneeDegrees = 20f;
+
         private readonly BvhClip _clip;
         private readonly HumanoidMap _map;
         private readonly SimulationOptions _options;
@@ -33,7 +35,78 @@ namespace AvatarGo.Simulation
             if (!(frames < int.MaxValue)) throw new ArgumentException($"The clip is too long to simulate at {_options.Rate} Hz ({(long)Math.Min(frames, long.MaxValue)} frames).", nameof(clip));
             _map = map ?? HumanoidNaming.Detect(clip.Skeleton);
             _map.RequireComplete(nameof(clip));
+            if (_options.MirrorBackwardClip && LooksMirrored(clip, _map, out _, out _))
+            {
+                // The same joints play the same bones on the mirrored skeleton.
+                Mirrored = true;
+                _clip = clip = clip.Mirrored();
+                var bones = new List<KeyValuePair<HumanoidBone, string>>();
+                for (int b = 0; b < HumanoidBones.Count; b++)
+                    if (_map.Has((HumanoidBone)b)) bones.Add(new KeyValuePair<HumanoidBone, string>((HumanoidBone)b, _map.NameOf((HumanoidBone)b)));
+                _map = new HumanoidMap(clip.Skeleton, bones);
+            }
             Upright = _options.StandClipUp ? UprightTurn(clip, _map) : Quaternion.Identity;
+        }
+
+        /// <summary>
+        /// Whether the clip was mirrored left to right (<see cref="BvhClip.Mirrored"/>) before anything else: its knees bent
+        /// backward (<see cref="LooksMirrored"/>). That is a
+        /// clip written in a left-handed frame or with its sides named the wrong way round (its joints named Left on the
+        /// body's right): worn as it is, its wearer's knees would bend backward. <see cref="SimulationOptions.MirrorBackwardClip"/>
+        /// false keeps every clip as it is.
+        /// </summary>
+        public bool Mirrored { get; }
+
+        /// <summary>
+        /// Whether <paramref name="clip"/>'s knees bend backward in at least 10 bent frames and twice as many as they bend
+        /// forward (<see cref="CountKneeBends"/>, whose counts are returned): its joints named Left are on the body's right.
+        /// </summary>
+        public static bool LooksMirrored(BvhClip clip, HumanoidMap map, out int forward, out int backward)
+        {
+            CountKneeBends(clip, map, out forward, out backward);
+            return backward >= 10 && backward >= 2 * forward;
+        }
+
+        /// <summary>
+        /// Counts, over every frame of <paramref name="clip"/> and both knees bent 20° or more, the knees that bend forward and
+        /// those that bend backward: the knee's offset from the hip-to-ankle line against the body's forward (the line from the
+        /// left to the right hip crossed with the hips-to-head up), square to the leg; offsets within 72° of square to the
+        /// forward count neither way (a kneeling leg's shin lies along its forward). It depends on the motion only, not on
+        /// the rest pose, the bones' axes or the up axis.
+        /// </summary>
+        public static void CountKneeBends(BvhClip clip, HumanoidMap map, out int forward, out int backward)
+        {
+            if (clip == null) throw new ArgumentNullException(nameof(clip));
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            forward = backward = 0;
+            Skeleton s = clip.Skeleton;
+            var local = new RigidPose[s.JointCount];
+            var world = new RigidPose[s.JointCount];
+            float bent = MathF.Cos(BentKneeDegrees * Rotations.Deg2Rad);
+            for (int f = 0; f < clip.FrameCount; f++)
+            {
+                clip.GetWorldPoses(f, local, world);
+                Vector3 leftHip = world[map[HumanoidBone.LeftUpperLeg]].Position, rightHip = world[map[HumanoidBone.RightUpperLeg]].Position;
+                Vector3 up = world[map[HumanoidBone.Head]].Position - 0.5f * (leftHip + rightHip);
+                Vector3 bodyForward = Vector3.Cross(rightHip - leftHip, up);
+                if (!(bodyForward.LengthSquared() > 1e-12f)) continue;
+                bodyForward = Vector3.Normalize(bodyForward);
+                foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+                {
+                    Vector3 hip = side == BodySide.Left ? leftHip : rightHip;
+                    Vector3 knee = world[map[HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, side)]].Position;
+                    Vector3 ankle = world[map[HumanoidBones.OnSide(HumanoidBone.LeftFoot, side)]].Position;
+                    Vector3 thigh = knee - hip, shin = ankle - knee, leg = ankle - hip;
+                    if (!(thigh.LengthSquared() > 1e-12f && shin.LengthSquared() > 1e-12f && leg.LengthSquared() > 1e-12f)) continue;
+                    if (Vector3.Dot(Vector3.Normalize(thigh), Vector3.Normalize(shin)) > bent) continue;
+                    Vector3 axis = Vector3.Normalize(leg);
+                    Vector3 offset = Vectors.ProjectOnPlane(thigh, axis), ahead = Vectors.ProjectOnPlane(bodyForward, axis);
+                    if (!(offset.LengthSquared() > 1e-12f) || !(ahead.LengthSquared() > 0.09f)) continue;
+                    float along = Vector3.Dot(Vector3.Normalize(offset), Vector3.Normalize(ahead));
+                    if (along > 0.3f) forward++;
+                    else if (along < -0.3f) backward++;
+                }
+            }
         }
 
         /// <summary>

@@ -56,5 +56,12 @@ namespace AvatarGo.Simulation
         /// (<see cref="SessionSimulator.Upright"/>; default true). False simulates the clip as it is, +Y up as BVH defines it.
         /// </summary>
         public bool StandClipUp { get; set; } = true;
+
+        /// <summary>
+        /// Whether a clip whose knees bend backward (written in a left-handed frame, or its sides named the wrong way round)
+        /// is mirrored left to right before simulating (<see cref="SessionSimulator.Mirrored"/>; default true). False
+        /// simulates every clip as it is.
+        /// </summary>
+        public bool MirrorBackwardClip { get; set; } = true;
     }
 }

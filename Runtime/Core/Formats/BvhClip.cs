@@ -112,6 +112,39 @@ namespace AvatarGo.Core
         }
 
         /// <summary>
+        /// The clip reflected left to right (through the file's YZ plane): every X offset and X translation negated, every Y
+        /// and Z rotation angle negated (a reflection turns a rotation about X the same way and one about Y or Z the other
+        /// way, whatever the order the channels compose in). Each joint's world position in every frame is the original's
+        /// with X negated, to float precision; names are kept, so a joint named Left ends on the other side. For a clip
+        /// written in a left-handed frame, or one whose sides are named the wrong way round, this is the clip as it was meant.
+        /// </summary>
+        public BvhClip Mirrored()
+        {
+            int n = Skeleton.JointCount;
+            var offsets = new Vector3[n];
+            var channels = new BvhChannel[n][];
+            var parents = new int[n];
+            var endSites = new bool[n];
+            var negate = new bool[ChannelCount];
+            for (int j = 0; j < n; j++)
+            {
+                offsets[j] = new Vector3(-_fileOffsets[j].X, _fileOffsets[j].Y, _fileOffsets[j].Z);
+                channels[j] = _channels[j];
+                parents[j] = Skeleton.GetParent(j);
+                endSites[j] = Skeleton.IsEndSite(j);
+                for (int c = 0; c < _channels[j].Length; c++)
+                {
+                    BvhChannel channel = _channels[j][c];
+                    negate[_channelStart[j] + c] = channel == BvhChannel.Xposition || channel == BvhChannel.Yrotation || channel == BvhChannel.Zrotation;
+                }
+            }
+            var values = new float[_values.Length];
+            for (long i = 0; i < values.LongLength; i++)
+                values[i] = negate[i % ChannelCount] ? -_values[i] : _values[i];
+            return new BvhClip(Skeleton.Names, parents, endSites, offsets, channels, FrameCount, FrameTime, values, Scale);
+        }
+
+        /// <summary>
         /// The local pose of every joint in a frame, in Unity's frame and scaled. Allocation-free.
         /// </summary>
         public void GetLocalPoses(int frame, Span<RigidPose> local)

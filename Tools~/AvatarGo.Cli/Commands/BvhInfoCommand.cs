@@ -2,6 +2,7 @@ using System.Globalization;
 using System.IO;
 using System.Linq;
 using AvatarGo.Core;
+using AvatarGo.Simulation;
 
 namespace AvatarGo.Cli.Commands;
 
@@ -46,6 +47,11 @@ public sealed class BvhInfoCommand : ICommand
         }
         var missing = map.MissingRequired();
         stdout.WriteLine($"humanoid: {map.Count} bones mapped; missing required: {(missing.Count == 0 ? "none" : string.Join(", ", missing))}");
+        if (missing.Count == 0)
+        {
+            bool mirrored = SessionSimulator.LooksMirrored(clip, map, out int forward, out int backward);
+            stdout.WriteLine($"knees bent 20 deg or more: {forward} bend forward, {backward} backward{(mirrored ? " (its sides look mirrored: a left-handed export, or Left and Right named the wrong way round; simulate mirrors it)" : "")}");
+        }
         return 0;
     }
 }

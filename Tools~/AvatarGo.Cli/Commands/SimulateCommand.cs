@@ -33,6 +33,9 @@ public sealed class SimulateCommand : ICommand
                               with --refine --exercise-seconds S
           --keep-up           simulate the clip with +Y up as it is; by default a clip recorded with another
                               axis up (a Z-up export) is stood up first, and the command says so
+          --keep-sides        simulate the clip as it is even if its knees bend backward; by default such a clip
+                              (a left-handed export, or its sides named the wrong way round) is mirrored left to
+                              right first, and the command says so
         Exit codes: 0 ok, 1 unreadable input, 2 bad arguments.
         """;
 
@@ -56,6 +59,8 @@ public sealed class SimulateCommand : ICommand
         }
         if (!WriteSession(simulator, output, stderr, "simulate")) return 1;
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"wrote {output}: {simulator.FrameCount} frames at {options.Rate:0.##} Hz"));
+        if (simulator.Mirrored)
+            stdout.WriteLine("the clip's knees bend backward (a left-handed export, or its sides named the wrong way round): it was mirrored left to right");
         if (simulator.Upright != Quaternion.Identity)
             stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"the clip's up is not +Y: its motion was turned {Rotations.AngleDegrees(Quaternion.Identity, simulator.Upright):0} deg to stand it up"));
         return 0;
@@ -116,6 +121,7 @@ public sealed class SimulateCommand : ICommand
             Controller = ControllerProfiles.Named(a.String("controller", ControllerProfiles.Default)),
             ExerciseSeconds = (float)a.Double("exercise-seconds", 0),
             StandClipUp = !a.Flag("keep-up"),
+            MirrorBackwardClip = !a.Flag("keep-sides"),
         };
         if (!(o.ExerciseSeconds >= 0 && o.ExerciseSeconds <= 60)) throw new UsageException("--exercise-seconds must be between 0 and 60");
         if (!(o.Rate >= 10 && o.Rate <= 1000)) throw new UsageException("--rate must be between 10 and 1000 Hz");

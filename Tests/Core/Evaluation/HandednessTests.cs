@@ -1,0 +1,102 @@
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using AvatarGo.Simulation;
+using NUnit.Framework;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// A clip written in a left-handed frame reads as its own mirror image: the joints named Left end on the body's right,
+    /// and a wearer made from it bends its knees backward (before: calibration succeeded and every knee of the avatar was
+    /// flipped). The simulator sees the knees bend backward (<see cref="SessionSimulator.CountKneeBends"/>) and mirrors the
+    /// clip back (<see cref="SessionSimulator.Mirrored"/>), so the avatar follows it as it follows the original. A clip whose
+    /// sides are named the wrong way round is mirrored too: it becomes the mirror image of the motion, a valid person.
+    /// </summary>
+    public class HandednessTests
+    {
+        private static BvhClip Clip(string name) => BvhReader.ReadFile(TestData.Mocap(name), new BvhReadOptions { ToMetres = true });
+
+        private static (EvaluationReport report, bool mirrored) Evaluate(BvhClip clip, bool mirrorBackward = true)
+        {
+            var simulator = new SessionSimulator(clip, new SimulationOptions { Seed = 1, MirrorBackwardClip = mirrorBackward });
+            var text = new StringWriter();
+            using (var writer = new SessionWriter(text, simulator.CreateHeader())) simulator.Run(writer);
+            using var reader = new SessionReader(new StringReader(text.ToString()), "handedness");
+            return (SessionEvaluator.Evaluate(reader, new PipelineSettings()), simulator.Mirrored);
+        }
+
+        [Test]
+        public void MirroringMovesEveryJointToTheOtherSideInEveryFrame()
+        {
+            BvhClip clip = Clip("mixamo_fingers_30fps.bvh"), mirrored = clip.Mirrored();
+            int n = clip.Skeleton.JointCount;
+            var local = new RigidPose[n];
+            var world = new RigidPose[n];
+            var mirroredWorld = new RigidPose[n];
+            double worst = 0;
+            for (int f = 0; f < clip.FrameCount; f++)
+            {
+                clip.GetWorldPoses(f, local, world);
+                mirrored.GetWorldPoses(f, local, mirroredWorld);
+                for (int j = 0; j < n; j++)
+                {
+                    var p = world[j].Position;
+                    worst = System.Math.Max(worst, System.Numerics.Vector3.Distance(mirroredWorld[j].Position, new System.Numerics.Vector3(-p.X, p.Y, p.Z)));
+                }
+            }
+            Assert.That(worst, Is.LessThan(1e-5), "metres");
+            Assert.That(mirrored.Mirrored().GetValue(clip.FrameCount - 1, clip.ChannelCount - 1), Is.EqualTo(clip.GetValue(clip.FrameCount - 1, clip.ChannelCount - 1)), "mirrored twice is the clip");
+        }
+
+        [TestCase("mocapbank_30fps.bvh"), TestCase("mixamo_fingers_30fps.bvh")]
+        public void KneesBendForwardInTheSharedClipsAndBackwardInTheirMirrorImages(string name) => AssertKneesBendForward(Clip(name));
+
+        /// <summary>The whole Rigify clip (its first 240 frames, in the package, never bend a knee 20°).</summary>
+        [Test, Category("Slow")]
+        public void KneesBendForwardInTheWholeRigifyClip() =>
+            AssertKneesBendForward(BvhReader.ReadFile(TestData.SharedMocap("rigify_6channel_24fps.bvh"), new BvhReadOptions { ToMetres = true }));
+
+        private static void AssertKneesBendForward(BvhClip clip)
+        {
+            BvhClip mirrored = clip.Mirrored();
+            SessionSimulator.CountKneeBends(clip, HumanoidNaming.Detect(clip.Skeleton), out int forward, out int backward);
+            SessionSimulator.CountKneeBends(mirrored, HumanoidNaming.Detect(mirrored.Skeleton), out int mirroredForward, out int mirroredBackward);
+            Assert.That(forward, Is.GreaterThanOrEqualTo(10));
+            Assert.That(forward, Is.GreaterThan(2 * backward), "a real clip's knees bend forward");
+            Assert.That((mirroredForward, mirroredBackward), Is.EqualTo((backward, forward)), "the mirror image bends each knee the other way");
+        }
+
+        [Test]
+        public void ALeftHandedClipIsMirroredBackAndGivesTheSameAvatar()
+        {
+            BvhClip clip = Clip("mocapbank_30fps.bvh");
+            var (own, ownMirrored) = Evaluate(clip);
+            var (other, mirrored) = Evaluate(clip.Mirrored());
+            Assert.That(ownMirrored, Is.False, "a right-handed clip is left as it is");
+            Assert.That(mirrored, Is.True);
+            Assert.That(other.Profile, Is.Not.Null, other.CalibrationMessage);
+            Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(0.01), "MPJPE (mm)");
+            Assert.That(other.MidJointMm.Median, Is.EqualTo(own.MidJointMm.Median).Within(0.01), "elbows and knees median (mm)");
+
+            // Kept as it is, the same clip bends the avatar's knees backward in most bent frames.
+            var (kept, keptMirrored) = Evaluate(clip.Mirrored(), mirrorBackward: false);
+            Assert.That(keptMirrored, Is.False);
+            Assert.That(kept.BendPlanes.Where(b => b.Joint == HumanoidBone.LeftLowerLeg || b.Joint == HumanoidBone.RightLowerLeg).Min(b => b.FlippedShare), Is.GreaterThan(0.5));
+        }
+
+        [Test]
+        public void AClipWithItsSidesNamedTheWrongWayRoundBendsNoKneeBackward()
+        {
+            string text = File.ReadAllText(TestData.Mocap("mocapbank_30fps.bvh"));
+            string swapped = Regex.Replace(text, @"^(\s*(?:ROOT|JOINT)\s+)(Left|Right)", m => m.Groups[1].Value + (m.Groups[2].Value == "Left" ? "Right" : "Left"), RegexOptions.Multiline);
+            BvhClip clip = BvhReader.Read(new StringReader(swapped), "swapped", new BvhReadOptions { ToMetres = true });
+            var (report, mirrored) = Evaluate(clip);
+            Assert.That(mirrored, Is.True);
+            Assert.That(report.Profile, Is.Not.Null, report.CalibrationMessage);
+            foreach (BendPlaneReport bend in report.BendPlanes)
+                Assert.That(bend.FlippedShare, Is.LessThanOrEqualTo(0.01), bend.Joint.ToString());
+            Assert.That(report.AllJointsMm.Mean, Is.LessThan(18.0), "MPJPE (mm), issue 10's bound");
+        }
+    }
+}
