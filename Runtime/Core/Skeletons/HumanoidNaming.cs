@@ -23,8 +23,9 @@ namespace AvatarGo.Core
     /// MakeHuman (<c>upperarm01.L</c>, <c>lowerleg01.L</c>, <c>clavicle.L</c>). Explicit overrides win.
     /// </summary>
     /// <remarks>
-    /// Rules worth knowing: <c>Shoulder</c> is the clavicle when the same side also has an <c>Arm</c>/<c>UpperArm</c>
-    /// joint, otherwise (CMU, with a <c>Collar</c>) the upper arm. The spine chain is the unsided joints between
+    /// Rules worth knowing: a <c>Clavicle</c> or <c>Collar</c> is the clavicle; without one, <c>Shoulder</c> is the clavicle
+    /// when the same side also has an <c>Arm</c>/<c>UpperArm</c> joint, otherwise the upper arm (CMU: <c>Collar</c>, then
+    /// <c>Shoulder</c>). The spine chain is the unsided joints between
     /// the hips and the neck: the first is Spine, the second Chest, the third UpperChest. When a rig has no hand
     /// (or foot, or head) joint, the End Site that ends the forearm (shin, neck) plays it, so that every required
     /// bone is found on rigs like Rigify exports whose forearm ends in an End Site. A limb name missing as it is is tried as
