@@ -200,9 +200,11 @@ namespace AvatarGo.Core
                 case BoneRole.Spine:
                 {
                     int next = NextOnSpine(map, bone);
-                    int ls = map[HumanoidBone.LeftShoulder], rs = map[HumanoidBone.RightShoulder];
-                    bool carriesClavicles = ls >= 0 && rs >= 0 && pose.Skeleton.GetParent(ls) == j && pose.Skeleton.GetParent(rs) == j;
-                    Vector3 across = carriesClavicles ? At(pose, rs) - At(pose, ls) : Vector3.Zero;
+                    // Level across the arms' roots when this joint carries them: the clavicles, or the upper arms of a rig
+                    // without clavicles (whose shoulders this joint's turn alone places). Only the joint's own children:
+                    // their offsets are the skeleton's, whatever the rest convention.
+                    Vector3 across = ChildrenAcross(map, pose, j, HumanoidBone.LeftShoulder, HumanoidBone.RightShoulder);
+                    if (across == Vector3.Zero) across = ChildrenAcross(map, pose, j, HumanoidBone.LeftUpperArm, HumanoidBone.RightUpperArm);
                     return Turn(pose, j, At(pose, next) - At(pose, j), Vector3.UnitY, across, Vector3.UnitX);
                 }
                 case BoneRole.Head:
@@ -277,6 +279,13 @@ namespace AvatarGo.Core
                 default:
                     return false;
             }
+        }
+
+        // From the left to the right bone's joint when both are children of j, else zero.
+        private static Vector3 ChildrenAcross(HumanoidMap map, SkeletonPose pose, int j, HumanoidBone left, HumanoidBone right)
+        {
+            int l = map[left], r = map[right];
+            return l >= 0 && r >= 0 && pose.Skeleton.GetParent(l) == j && pose.Skeleton.GetParent(r) == j ? At(pose, r) - At(pose, l) : Vector3.Zero;
         }
 
         // Turns joint j by the smallest world rotation taking its current `from` direction onto `to`.
