@@ -119,8 +119,14 @@ namespace AvatarGo.Simulation
         /// </summary>
         public Quaternion Upright { get; }
 
-        private static Quaternion UprightTurn(BvhClip clip, HumanoidMap map)
+        /// <summary>
+        /// The turn that would stand <paramref name="clip"/> up (<see cref="Upright"/>): the identity for a clip whose up is +Y
+        /// or whose frames disagree about their up.
+        /// </summary>
+        public static Quaternion UprightTurn(BvhClip clip, HumanoidMap map)
         {
+            if (clip == null) throw new ArgumentNullException(nameof(clip));
+            if (map == null) throw new ArgumentNullException(nameof(map));
             Skeleton s = clip.Skeleton;
             var local = new RigidPose[s.JointCount];
             var world = new RigidPose[s.JointCount];

@@ -1,6 +1,8 @@
+using System;
 using System.Globalization;
 using System.IO;
 using System.Linq;
+using System.Numerics;
 using AvatarGo.Core;
 using AvatarGo.Simulation;
 
@@ -49,9 +51,19 @@ public sealed class BvhInfoCommand : ICommand
         stdout.WriteLine($"humanoid: {map.Count} bones mapped; missing required: {(missing.Count == 0 ? "none" : string.Join(", ", missing))}");
         if (missing.Count == 0)
         {
+            Quaternion upright = SessionSimulator.UprightTurn(clip, map);
+            stdout.WriteLine(upright == Quaternion.Identity ? "up: +Y"
+                : string.Create(inv, $"up: {AxisName(Vector3.Transform(Vector3.UnitY, Quaternion.Conjugate(upright)))} (not +Y: simulate turns the motion {Rotations.AngleDegrees(Quaternion.Identity, upright):0} deg to stand it up)"));
             bool mirrored = SessionSimulator.LooksMirrored(clip, map, out int forward, out int backward);
             stdout.WriteLine($"knees bent 20 deg or more: {forward} bend forward, {backward} backward{(mirrored ? " (its sides look mirrored: a left-handed export, or Left and Right named the wrong way round; simulate mirrors it)" : "")}");
         }
         return 0;
+    }
+
+    // "+X" … "-Z": the axis a unit vector lies along (the clip's up is always one of them).
+    private static string AxisName(Vector3 v)
+    {
+        float x = MathF.Abs(v.X), y = MathF.Abs(v.Y), z = MathF.Abs(v.Z);
+        return x >= y && x >= z ? (v.X > 0 ? "+X" : "-X") : y >= z ? (v.Y > 0 ? "+Y" : "-Y") : (v.Z > 0 ? "+Z" : "-Z");
     }
 }

@@ -41,7 +41,7 @@ public sealed class SimulateCommand : ICommand
 
     public int Run(string[] args, TextWriter stdout, TextWriter stderr)
     {
-        var a = new ArgReader(args);
+        var a = new ArgReader(args, "keep-up", "keep-sides");
         string bvh = a.String("bvh") ?? throw new UsageException("missing --bvh FILE");
         string output = a.String("out") ?? throw new UsageException("missing --out SESSION");
         var options = Options(a);

@@ -60,6 +60,66 @@ public class BvhCommandTests
         StringAssert.Contains("missing required: none", r.Stdout);
     }
 
+    /// <summary>
+    /// bvh info names a clip's up axis and counts its knee bends; on the clip's mirror image (a left-handed export) it says
+    /// its sides look mirrored, and simulate mirrors it back and says so, unless told --keep-sides.
+    /// </summary>
+    [Test]
+    public void InfoAndSimulateNameAMirroredClip()
+    {
+        var clip = AvatarGo.Core.BvhReader.ReadFile(Paths.Mocap("mocapbank_30fps.bvh"));
+        string dir = Path.Combine(Path.GetTempPath(), "avatargo-mirror-" + Guid.NewGuid().ToString("N"));
+        Directory.CreateDirectory(dir);
+        try
+        {
+            string mirrored = Path.Combine(dir, "mirrored.bvh");
+            AvatarGo.Core.BvhWriter.WriteFile(mirrored, clip.Mirrored());
+            var own = CliRunner.Run("bvh", "info", Paths.Mocap("mocapbank_30fps.bvh"));
+            StringAssert.Contains("up: +Y", own.Stdout);
+            StringAssert.Contains("knees bent 20 deg or more: 514 bend forward, 154 backward", own.Stdout);
+            StringAssert.DoesNotContain("mirrored", own.Stdout);
+            var info = CliRunner.Run("bvh", "info", mirrored);
+            Assert.That(info.ExitCode, Is.EqualTo(0), info.Stderr);
+            StringAssert.Contains("154 bend forward, 514 backward (its sides look mirrored", info.Stdout);
+
+            var simulated = CliRunner.Run("simulate", "--bvh", mirrored, "--out", Path.Combine(dir, "a.session"));
+            Assert.That(simulated.ExitCode, Is.EqualTo(0), simulated.Stderr);
+            StringAssert.Contains("it was mirrored left to right", simulated.Stdout);
+            var kept = CliRunner.Run("simulate", "--bvh", mirrored, "--out", Path.Combine(dir, "b.session"), "--keep-sides");
+            Assert.That(kept.ExitCode, Is.EqualTo(0), kept.Stderr);
+            StringAssert.DoesNotContain("mirrored", kept.Stdout);
+
+            // A Z-up copy: named by bvh info, stood up by simulate unless told --keep-up (a flag, as --keep-sides is:
+            // found by this test, --keep-up once asked for a value).
+            string zUp = Path.Combine(dir, "z-up.bvh");
+            AvatarGo.Core.BvhWriter.WriteFile(zUp, TurnedAboutX(clip, -90f));
+            StringAssert.Contains("up: -Z (not +Y", CliRunner.Run("bvh", "info", zUp).Stdout);
+            StringAssert.Contains("to stand it up", CliRunner.Run("simulate", "--bvh", zUp, "--out", Path.Combine(dir, "c.session")).Stdout);
+            var keptUp = CliRunner.Run("simulate", "--bvh", zUp, "--out", Path.Combine(dir, "d.session"), "--keep-up", "--keep-sides");
+            Assert.That(keptUp.ExitCode, Is.EqualTo(0), keptUp.Stderr);
+            StringAssert.DoesNotContain("stand it up", keptUp.Stdout);
+        }
+        finally { Directory.Delete(dir, true); }
+    }
+
+    // The clip turned about X at its roots (file units, as read).
+    private static AvatarGo.Core.BvhClip TurnedAboutX(AvatarGo.Core.BvhClip clip, float degrees)
+    {
+        var turn = System.Numerics.Quaternion.CreateFromAxisAngle(System.Numerics.Vector3.UnitX, degrees * MathF.PI / 180f);
+        var s = clip.Skeleton;
+        var frames = new List<AvatarGo.Core.RigidPose[]>();
+        for (int f = 0; f < clip.FrameCount; f++)
+        {
+            var local = new AvatarGo.Core.RigidPose[s.JointCount];
+            clip.GetLocalPoses(f, local);
+            for (int j = 0; j < local.Length; j++)
+                if (s.GetParent(j) < 0)
+                    local[j] = new AvatarGo.Core.RigidPose(System.Numerics.Vector3.Transform(local[j].Position, turn), System.Numerics.Quaternion.Normalize(turn * local[j].Rotation));
+            frames.Add(local);
+        }
+        return AvatarGo.Core.BvhClip.FromPoses(s, frames, clip.FrameTime);
+    }
+
     [Test]
     public void BrokenFileIsAOneLineErrorWithExitCode1()
     {
