@@ -15,7 +15,8 @@ namespace AvatarGo.Simulation
         /// <summary>
         /// Reads the clip <paramref name="bvhText"/> (named <paramref name="sourceName"/> in errors), simulates it with
         /// <paramref name="options"/> and writes the session to <paramref name="path"/> (atomically: a failure leaves any
-        /// earlier file as it was). Returns the wearer: the clip's skeleton in metres and its humanoid bones.
+        /// earlier file as it was). Returns the wearer as simulated (<see cref="SessionSimulator.Wearer"/>): the clip's skeleton in
+        /// metres, mirrored when its knees bent backward, and its humanoid bones.
         /// </summary>
         /// <exception cref="FormatException">The clip is not valid BVH (the message names the line).</exception>
         /// <exception cref="ArgumentException">The clip's skeleton lacks a humanoid bone the simulation needs.</exception>
@@ -31,7 +32,7 @@ namespace AvatarGo.Simulation
             string folder = Path.GetDirectoryName(Path.GetFullPath(path));
             if (!string.IsNullOrEmpty(folder)) Directory.CreateDirectory(folder);
             using (SessionWriter writer = SessionWriter.Create(path, simulator.CreateHeader())) simulator.Run(writer);
-            return wearer;
+            return simulator.Wearer;
         }
     }
 }

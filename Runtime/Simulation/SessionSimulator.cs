@@ -49,6 +49,12 @@ namespace AvatarGo.Simulation
         }
 
         /// <summary>
+        /// The wearer as simulated: the clip's skeleton (mirrored when <see cref="Mirrored"/>) and its humanoid bones. Solved
+        /// poses and the session's ground truth are of this skeleton, not the one passed in when the clip was mirrored.
+        /// </summary>
+        public HumanoidMap Wearer => _map;
+
+        /// <summary>
         /// Whether the clip was mirrored left to right (<see cref="BvhClip.Mirrored"/>) before anything else: its knees bent
         /// backward (<see cref="LooksMirrored"/>). That is a
         /// clip written in a left-handed frame or with its sides named the wrong way round (its joints named Left on the
@@ -58,21 +64,24 @@ namespace AvatarGo.Simulation
         public bool Mirrored { get; }
 
         /// <summary>
-        /// Whether <paramref name="clip"/>'s knees bend backward in at least 10 bent frames and twice as many as they bend
-        /// forward (<see cref="CountKneeBends"/>, whose counts are returned): its joints named Left are on the body's right.
+        /// Whether <paramref name="clip"/>'s knees bend backward in at least <see cref="MirroredMinimumBends"/> bent frames
+        /// and twice as many as they bend forward (<see cref="CountKneeBends"/>, whose counts are returned): its joints named
+        /// Left are on the body's right.
         /// </summary>
         public static bool LooksMirrored(BvhClip clip, HumanoidMap map, out int forward, out int backward)
         {
             CountKneeBends(clip, map, out forward, out backward);
-            return backward >= 10 && backward >= 2 * forward;
+            return backward >= MirroredMinimumBends && backward >= 2 * forward;
         }
+
+        /// <summary>The fewest backward knee bends that make a clip look mirrored (10): a few frames of a hyperextended knee do not.</summary>
+        public const int MirroredMinimumBends = 10;
 
         /// <summary>
         /// Counts, over every frame of <paramref name="clip"/> and both knees bent 20° or more, the knees that bend forward and
-        /// those that bend backward: the knee's offset from the hip-to-ankle line against the body's forward (the line from the
-        /// left to the right hip crossed with the hips-to-head up), square to the leg; offsets within 72° of square to the
-        /// forward count neither way (a kneeling leg's shin lies along its forward). It depends on the motion only, not on
-        /// the rest pose, the bones' axes or the up axis.
+        /// those that bend backward: the knee's hinge axis (the thigh crossed with the shin) against the hip line (left to
+        /// right hip); a hinge axis more than 60° from the hip line counts neither way. It reads the legs and the pelvis only,
+        /// so a trunk folded forward or a clip lying down changes nothing, nor do the rest pose, the bones' axes or the up axis.
         /// </summary>
         public static void CountKneeBends(BvhClip clip, HumanoidMap map, out int forward, out int backward)
         {
@@ -87,27 +96,29 @@ namespace AvatarGo.Simulation
             {
                 clip.GetWorldPoses(f, local, world);
                 Vector3 leftHip = world[map[HumanoidBone.LeftUpperLeg]].Position, rightHip = world[map[HumanoidBone.RightUpperLeg]].Position;
-                Vector3 up = world[map[HumanoidBone.Head]].Position - 0.5f * (leftHip + rightHip);
-                Vector3 bodyForward = Vector3.Cross(rightHip - leftHip, up);
-                if (!(bodyForward.LengthSquared() > 1e-12f)) continue;
-                bodyForward = Vector3.Normalize(bodyForward);
-                foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+                Vector3 hipLine = rightHip - leftHip;
+                if (!(hipLine.LengthSquared() > 1e-12f)) continue;
+                hipLine = Vector3.Normalize(hipLine);
+                for (int side = 0; side < 2; side++)
                 {
-                    Vector3 hip = side == BodySide.Left ? leftHip : rightHip;
-                    Vector3 knee = world[map[HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, side)]].Position;
-                    Vector3 ankle = world[map[HumanoidBones.OnSide(HumanoidBone.LeftFoot, side)]].Position;
-                    Vector3 thigh = knee - hip, shin = ankle - knee, leg = ankle - hip;
-                    if (!(thigh.LengthSquared() > 1e-12f && shin.LengthSquared() > 1e-12f && leg.LengthSquared() > 1e-12f)) continue;
-                    if (Vector3.Dot(Vector3.Normalize(thigh), Vector3.Normalize(shin)) > bent) continue;
-                    Vector3 axis = Vector3.Normalize(leg);
-                    Vector3 offset = Vectors.ProjectOnPlane(thigh, axis), ahead = Vectors.ProjectOnPlane(bodyForward, axis);
-                    if (!(offset.LengthSquared() > 1e-12f) || !(ahead.LengthSquared() > 0.09f)) continue;
-                    float along = Vector3.Dot(Vector3.Normalize(offset), Vector3.Normalize(ahead));
-                    if (along > 0.3f) forward++;
-                    else if (along < -0.3f) backward++;
+                    BodySide body = side == 0 ? BodySide.Left : BodySide.Right;
+                    Vector3 hip = side == 0 ? leftHip : rightHip;
+                    Vector3 knee = world[map[HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, body)]].Position;
+                    Vector3 ankle = world[map[HumanoidBones.OnSide(HumanoidBone.LeftFoot, body)]].Position;
+                    Vector3 thigh = knee - hip, shin = ankle - knee;
+                    if (!(thigh.LengthSquared() > 1e-12f && shin.LengthSquared() > 1e-12f)) continue;
+                    thigh = Vector3.Normalize(thigh);
+                    shin = Vector3.Normalize(shin);
+                    if (Vector3.Dot(thigh, shin) > bent) continue;
+                    // A knee bending forward turns the shin back under the thigh: thigh × shin points to the body's right.
+                    float along = Vector3.Dot(Vector3.Normalize(Vector3.Cross(thigh, shin)), hipLine);
+                    if (along > HingeOnHipLine) forward++;
+                    else if (along < -HingeOnHipLine) backward++;
                 }
             }
         }
+
+        private const float HingeOnHipLine = 0.5f; // cos 60°
 
         /// <summary>
         /// The turn that stands the clip's motion up (applied to its roots before anything else): the identity for a clip

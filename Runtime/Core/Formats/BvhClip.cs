@@ -101,14 +101,20 @@ namespace AvatarGo.Core
         {
             var channels = new BvhChannel[_channels.Length][];
             Array.Copy(_channels, channels, channels.Length);
-            var parents = new int[Skeleton.JointCount];
-            var endSites = new bool[Skeleton.JointCount];
+            Hierarchy(out int[] parents, out bool[] endSites);
+            return new BvhClip(Skeleton.Names, parents, endSites, _fileOffsets, channels, FrameCount, FrameTime, _values, scale);
+        }
+
+        // The skeleton's parents and End Site flags, as the constructor takes them.
+        private void Hierarchy(out int[] parents, out bool[] endSites)
+        {
+            parents = new int[Skeleton.JointCount];
+            endSites = new bool[Skeleton.JointCount];
             for (int i = 0; i < parents.Length; i++)
             {
                 parents[i] = Skeleton.GetParent(i);
                 endSites[i] = Skeleton.IsEndSite(i);
             }
-            return new BvhClip(Skeleton.Names, parents, endSites, _fileOffsets, channels, FrameCount, FrameTime, _values, scale);
         }
 
         /// <summary>
@@ -122,16 +128,11 @@ namespace AvatarGo.Core
         {
             int n = Skeleton.JointCount;
             var offsets = new Vector3[n];
-            var channels = new BvhChannel[n][];
-            var parents = new int[n];
-            var endSites = new bool[n];
             var negate = new bool[ChannelCount];
+            Hierarchy(out int[] parents, out bool[] endSites);
             for (int j = 0; j < n; j++)
             {
                 offsets[j] = new Vector3(-_fileOffsets[j].X, _fileOffsets[j].Y, _fileOffsets[j].Z);
-                channels[j] = _channels[j];
-                parents[j] = Skeleton.GetParent(j);
-                endSites[j] = Skeleton.IsEndSite(j);
                 for (int c = 0; c < _channels[j].Length; c++)
                 {
                     BvhChannel channel = _channels[j][c];
@@ -141,7 +142,7 @@ namespace AvatarGo.Core
             var values = new float[_values.Length];
             for (long i = 0; i < values.LongLength; i++)
                 values[i] = negate[i % ChannelCount] ? -_values[i] : _values[i];
-            return new BvhClip(Skeleton.Names, parents, endSites, offsets, channels, FrameCount, FrameTime, values, Scale);
+            return new BvhClip(Skeleton.Names, parents, endSites, offsets, _channels, FrameCount, FrameTime, values, Scale);
         }
 
         /// <summary>

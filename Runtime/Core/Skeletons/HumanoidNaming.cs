@@ -23,15 +23,15 @@ namespace AvatarGo.Core
     /// MakeHuman (<c>upperarm01.L</c>, <c>lowerleg01.L</c>, <c>clavicle.L</c>). Explicit overrides win.
     /// </summary>
     /// <remarks>
-    /// Rules worth knowing: a <c>Clavicle</c> or <c>Collar</c> is the clavicle; without one, <c>Shoulder</c> is the clavicle
-    /// when the same side also has an <c>Arm</c>/<c>UpperArm</c> joint, otherwise the upper arm (CMU: <c>Collar</c>, then
-    /// <c>Shoulder</c>). The spine chain is the unsided joints between
+    /// Rules worth knowing: <c>Shoulder</c> is the clavicle when the same side also has an <c>Arm</c>/<c>UpperArm</c>
+    /// joint, otherwise (CMU, with a <c>Collar</c>) the upper arm; every key is tried as written before any is tried as a
+    /// numbered segment, so MakeHuman's <c>clavicle</c> wins over its <c>shoulder01</c>. The spine chain is the unsided joints between
     /// the hips and the neck: the first is Spine, the second Chest, the third UpperChest. When a rig has no hand
     /// (or foot, or head) joint, the End Site that ends the forearm (shin, neck) plays it, so that every required
     /// bone is found on rigs like Rigify exports whose forearm ends in an End Site. A limb name missing as it is is tried as
     /// the first of numbered segments (<c>upperarm01</c>). Without a neck or head name, the spine goes on above the joint
-    /// that carries the arms, through joints named like it (else through single children): the first is the neck, the last
-    /// the head.
+    /// that carries the arms through joints named like it (<c>spine.003</c>, <c>spine.004</c>): the first is the neck, the
+    /// last the head.
     /// </remarks>
     public static class HumanoidNaming
     {
@@ -104,10 +104,10 @@ namespace AvatarGo.Core
                 if (toes >= 0 && !skeleton.IsEndSite(toes)) Put(left ? HumanoidBone.LeftToes : HumanoidBone.RightToes, toes);
 
                 // Arms: is "shoulder" the clavicle or the upper arm on this side?
-                // A "clavicle" or "collar" is the clavicle even beside a "shoulder" (MakeHuman: clavicle, shoulder01, upperarm01).
                 bool hasArm = FindAnywhere(cores, sides, side, "arm", "upperarm", "uparm", "armupper") >= 0;
-                int clavicle = Find(skeleton, cores, sides, side, hips, "clavicle", "collar");
-                if (clavicle < 0 && hasArm) clavicle = Find(skeleton, cores, sides, side, hips, "shoulder", "shoulder1");
+                int clavicle = hasArm
+                    ? Find(skeleton, cores, sides, side, hips, "shoulder", "clavicle", "collar", "shoulder1")
+                    : Find(skeleton, cores, sides, side, hips, "clavicle", "collar");
                 int upArm = hasArm
                     ? Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "arm", "upperarm", "uparm", "armupper")
                     : Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "shoulder", "humerus", "shldr");
@@ -188,31 +188,32 @@ namespace AvatarGo.Core
         }
 
         // A spine named without a neck or a head (Rigify's DEF-spine.004 to .006, any numbered chain): it goes on above the
-        // joint that carries the arms, through unsided joints named like that joint (else through single children); the
-        // first is the neck and the last the head, a chain of one joint the head alone.
+        // joint that carries the arms through the unsided joints named like that joint (the same letters, other digits); the
+        // first is the neck and the last the head, a chain of one joint the head alone. Joints named otherwise are not
+        // followed: a jaw, a hair strand or a prop under an unnamed head would make a wrong head, where a missing one is a
+        // clear error.
         private static void SpineAboveTheArms(Skeleton s, string[] cores, Side[] sides, HashSet<int> used, int carrier, out int neck, out int head)
         {
             neck = head = -1;
             if (carrier < 0) return;
             string stem = Stem(cores[carrier]);
-            bool byName = stem.Length > 0 && NextOnSpine(s, cores, sides, used, carrier, stem) >= 0;
+            if (stem.Length == 0) return;
             var chain = new List<int>();
-            for (int next = NextOnSpine(s, cores, sides, used, carrier, byName ? stem : null); next >= 0; next = NextOnSpine(s, cores, sides, used, next, byName ? stem : null))
+            for (int next = SpineChildNamed(s, cores, sides, used, carrier, stem); next >= 0; next = SpineChildNamed(s, cores, sides, used, next, stem))
                 chain.Add(next);
             if (chain.Count == 0) return;
             head = chain[chain.Count - 1];
             if (chain.Count > 1) neck = chain[0];
         }
 
-        // The child of `at` the spine goes on through: the one unsided, unused joint (not an End Site) named with `stem`, or
-        // with no stem the only unsided, unused child; -1 when there is none or the choice is not unique.
-        private static int NextOnSpine(Skeleton s, string[] cores, Side[] sides, HashSet<int> used, int at, string stem)
+        // The one unsided, unused child of `at` (not an End Site) whose name has the letters `stem`; -1 when there is none or
+        // more than one.
+        private static int SpineChildNamed(Skeleton s, string[] cores, Side[] sides, HashSet<int> used, int at, string stem)
         {
             int found = -1, count = 0;
             for (int j = at + 1; j < s.JointCount; j++)
             {
-                if (s.GetParent(j) != at || s.IsEndSite(j) || sides[j] != Side.None || used.Contains(j)) continue;
-                if (stem != null && Stem(cores[j]) != stem) continue;
+                if (s.GetParent(j) != at || s.IsEndSite(j) || sides[j] != Side.None || used.Contains(j) || Stem(cores[j]) != stem) continue;
                 found = j;
                 count++;
             }

@@ -191,16 +191,53 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
-        public void ASpineWithoutNeckOrHeadNamesEndsInTheHead()
+        public void ANumberedSpineWithoutNeckOrHeadNamesEndsInTheHead()
         {
-            // Names the rules do not know above the arms: the spine goes on through the carrier's only unsided child.
+            // Joints named like the one carrying the arms go on to the head; a jaw or a hair strand under it is not followed.
             HumanoidMap map = HumanoidNaming.Detect(Build(
-                "Hips", "Spine<Hips", "Chest<Spine", "Bone.007<Chest", "Bone.008<Bone.007", "Bone.008_end!<Bone.008",
-                "LeftShoulder<Chest", "LeftArm<LeftShoulder", "LeftForeArm<LeftArm", "LeftHand<LeftForeArm",
-                "RightShoulder<Chest", "RightArm<RightShoulder", "RightForeArm<RightArm", "RightHand<RightForeArm",
+                "Hips", "Bone1<Hips", "Bone2<Bone1", "Bone3<Bone2", "Bone4<Bone3", "Jaw_C<Bone4", "Hair1<Bone4", "Hair2<Hair1",
+                "LeftShoulder<Bone2", "LeftArm<LeftShoulder", "LeftForeArm<LeftArm", "LeftHand<LeftForeArm",
+                "RightShoulder<Bone2", "RightArm<RightShoulder", "RightForeArm<RightArm", "RightHand<RightForeArm",
                 "LeftUpLeg<Hips", "LeftLeg<LeftUpLeg", "LeftFoot<LeftLeg", "RightUpLeg<Hips", "RightLeg<RightUpLeg", "RightFoot<RightLeg"));
             Assert.That(map.MissingRequired(), Is.Empty);
-            Expect(map, "Neck=Bone.007", "Head=Bone.008", "Spine=Spine", "Chest=Chest");
+            Expect(map, "Neck=Bone3", "Head=Bone4", "Spine=Bone1", "Chest=Bone2");
+        }
+
+        [Test]
+        public void OtherNamesAboveTheArmsLeaveTheHeadMissingRatherThanGuessed()
+        {
+            // Found in review: following single children made a jaw, a hair strand or a backpack strap the head.
+            foreach (string[] above in new[]
+            {
+                new[] { "Bone.007<Chest", "Bone.008<Bone.007", "Jaw<Bone.008" },
+                new[] { "Backpack<Chest", "Backpack_Strap<Backpack" },
+            })
+            {
+                var entries = new List<string> { "Hips", "Spine<Hips", "Chest<Spine" };
+                entries.AddRange(above);
+                entries.AddRange(new[]
+                {
+                    "LeftShoulder<Chest", "LeftArm<LeftShoulder", "LeftForeArm<LeftArm", "LeftHand<LeftForeArm",
+                    "RightShoulder<Chest", "RightArm<RightShoulder", "RightForeArm<RightArm", "RightHand<RightForeArm",
+                    "LeftUpLeg<Hips", "LeftLeg<LeftUpLeg", "LeftFoot<LeftLeg", "RightUpLeg<Hips", "RightLeg<RightUpLeg", "RightFoot<RightLeg",
+                });
+                HumanoidMap map = HumanoidNaming.Detect(Build(entries.ToArray()));
+                Assert.That(map.MissingRequired(), Is.EqualTo(new[] { HumanoidBone.Head }), above[0]);
+                Assert.That(map.Has(HumanoidBone.Neck), Is.False, above[0]);
+            }
+        }
+
+        [Test]
+        public void ACollarBoneBesideTheShoulderIsNotTheClavicle()
+        {
+            // Found in review: a Bandai-style rig with cloth collar bones lost its upper arms when a collar was preferred.
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                "Hips", "Spine<Hips", "Chest<Spine", "Neck<Chest", "Head<Neck", "Collar_L<Chest", "Collar_R<Chest",
+                "Shoulder_L<Chest", "UpperArm_L<Shoulder_L", "LowerArm_L<UpperArm_L", "Hand_L<LowerArm_L",
+                "Shoulder_R<Chest", "UpperArm_R<Shoulder_R", "LowerArm_R<UpperArm_R", "Hand_R<LowerArm_R",
+                "UpperLeg_L<Hips", "LowerLeg_L<UpperLeg_L", "Foot_L<LowerLeg_L", "UpperLeg_R<Hips", "LowerLeg_R<UpperLeg_R", "Foot_R<LowerLeg_R"));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Expect(map, "LeftShoulder=Shoulder_L", "LeftUpperArm=UpperArm_L", "RightShoulder=Shoulder_R", "RightUpperArm=UpperArm_R");
         }
 
         [Test]

@@ -67,9 +67,11 @@ public sealed class DemoCommand : ICommand
                 return 1;
             }
             PrintTable(stdout, Path.GetFileName(bvh), clip, simulator.FrameCount, options, exact, fixedOffsets);
+            SimulateCommand.PrintClipNotes(simulator, stdout);
             if (outBvh != null)
             {
-                BvhWriter.WriteFile(outBvh, BvhClip.FromPoses(exact.Profile != null ? ScaledSkeleton(clip, exact.Profile) : clip.Skeleton, solved, 1f / options.Rate, 0.01f));
+                Skeleton wearer = simulator.Wearer.Skeleton; // the clip's, mirrored when the simulator mirrored it
+                BvhWriter.WriteFile(outBvh, BvhClip.FromPoses(exact.Profile != null ? wearer.Scaled(exact.Profile.AvatarScale) : wearer, solved, 1f / options.Rate, 0.01f));
                 stdout.WriteLine($"solved avatar written to {outBvh} (centimetres, {solved.Count} frames)");
             }
             return 0;
@@ -79,8 +81,6 @@ public sealed class DemoCommand : ICommand
             File.Delete(session);
         }
     }
-
-    private static Skeleton ScaledSkeleton(BvhClip clip, CalibrationProfile profile) => clip.Skeleton.Scaled(profile.AvatarScale);
 
     private static void PrintTable(TextWriter o, string name, BvhClip clip, int frames, SimulationOptions options, EvaluationReport exact, EvaluationReport fixedOffsets)
     {

@@ -59,11 +59,17 @@ public sealed class SimulateCommand : ICommand
         }
         if (!WriteSession(simulator, output, stderr, "simulate")) return 1;
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"wrote {output}: {simulator.FrameCount} frames at {options.Rate:0.##} Hz"));
+        PrintClipNotes(simulator, stdout);
+        return 0;
+    }
+
+    /// <summary>Says what the simulator changed about the clip before wearing it: mirrored it, stood it up.</summary>
+    internal static void PrintClipNotes(SessionSimulator simulator, TextWriter stdout)
+    {
         if (simulator.Mirrored)
             stdout.WriteLine("the clip's knees bend backward (a left-handed export, or its sides named the wrong way round): it was mirrored left to right");
         if (simulator.Upright != Quaternion.Identity)
             stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"the clip's up is not +Y: its motion was turned {Rotations.AngleDegrees(Quaternion.Identity, simulator.Upright):0} deg to stand it up"));
-        return 0;
     }
 
     /// <summary>
