@@ -14,7 +14,8 @@ namespace AvatarGo.Core
     /// <remarks>
     /// <para>Every joint is oriented from where its children are in its own frame (the skeleton's rest translations,
     /// which no bind pose changes), never from its rest rotation: a joint with two landmarks is fixed completely (the
-    /// hips by the hip line and the spine, the chest by the neck and the clavicles, the hand by the middle finger's base
+    /// hips by the hip line and the spine, the chest by the neck and the clavicles (the upper arms on a rig without
+    /// clavicles), the hand by the middle finger's base
     /// and the little-to-index line, the head by its eyes and crown); a joint with one (an upper arm, a shin, a finger
     /// bone) gets its direction. The twist about such a bone is not given by any landmark: it is the smallest turn from
     /// <c>twistReference</c> (the rest pose unless another pose is given), and nothing in the core depends on it (the
