@@ -20,7 +20,8 @@ namespace AvatarGo.Core
     /// (<c>FullBody_LeftArmUpper</c>, <c>FullBody_LeftFootAnkle</c>), and the CMU database's ASF names (<c>root</c>,
     /// <c>lowerback</c>, <c>lclavicle</c>, <c>lhumerus</c>, <c>lradius</c>, <c>lwrist</c>, <c>lfemur</c>, <c>ltibia</c>),
     /// Rigify's deform bones (<c>DEF-upper_arm.L</c>, the neck and head <c>DEF-spine.004</c> and <c>DEF-spine.006</c>) and
-    /// MakeHuman (<c>upperarm01.L</c>, <c>lowerleg01.L</c>, <c>clavicle.L</c>). Explicit overrides win.
+    /// MakeHuman (<c>upperarm01.L</c>, <c>lowerleg01.L</c>, <c>clavicle.L</c>) and OptiTrack Motive (<c>Hip</c>, <c>Ab</c>,
+    /// <c>LShoulder</c>, <c>LUArm</c>, <c>LFArm</c>, <c>LThigh</c>, <c>LShin</c>). Explicit overrides win.
     /// </summary>
     /// <remarks>
     /// Rules worth knowing: <c>Shoulder</c> is the clavicle when the same side also has an <c>Arm</c>/<c>UpperArm</c>
@@ -104,14 +105,14 @@ namespace AvatarGo.Core
                 if (toes >= 0 && !skeleton.IsEndSite(toes)) Put(left ? HumanoidBone.LeftToes : HumanoidBone.RightToes, toes);
 
                 // Arms: is "shoulder" the clavicle or the upper arm on this side?
-                bool hasArm = FindAnywhere(cores, sides, side, "arm", "upperarm", "uparm", "armupper") >= 0;
+                bool hasArm = FindAnywhere(cores, sides, side, UpperArmKeys) >= 0;
                 int clavicle = hasArm
                     ? Find(skeleton, cores, sides, side, hips, "shoulder", "clavicle", "collar", "shoulder1")
                     : Find(skeleton, cores, sides, side, hips, "clavicle", "collar");
                 int upArm = hasArm
-                    ? Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "arm", "upperarm", "uparm", "armupper")
+                    ? Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, UpperArmKeys)
                     : Find(skeleton, cores, sides, side, clavicle >= 0 ? clavicle : hips, "shoulder", "humerus", "shldr");
-                int foreArm = Find(skeleton, cores, sides, side, upArm, "forearm", "lowerarm", "elbow", "radius", "armlower");
+                int foreArm = Find(skeleton, cores, sides, side, upArm, "forearm", "lowerarm", "elbow", "radius", "armlower", "farm");
                 // A "wrist" above a "hand" (SMPL: L_Wrist, then L_Hand at the knuckles) is the hand bone.
                 int hand = Find(skeleton, cores, sides, side, foreArm, "hand", "wrist", "handwrist");
                 int wrist = Find(skeleton, cores, sides, side, foreArm, "wrist");
@@ -259,6 +260,8 @@ namespace AvatarGo.Core
 
         private static readonly string[] UpperLegKeys = { "upleg", "upperleg", "thigh", "hip", "femur", "legupper" };
 
+        private static readonly string[] UpperArmKeys = { "arm", "upperarm", "uparm", "armupper", "uarm" };
+
         // The unsided joint whose core name is one of the keys with the fewest ancestors (the first in hierarchy order among
         // equals), or -1.
         private static int Shallowest(Skeleton s, string[] cores, Side[] sides, params string[] keys)
@@ -319,6 +322,8 @@ namespace AvatarGo.Core
             if (s.Length >= 3 && (s[0] == 'l' || s[0] == 'r') && char.IsUpper(s[1]) && char.IsLower(s[2])) { side = s[0] == 'l' ? Side.Left : Side.Right; lower = lower.Substring(1); }
             else if (lower.Length > 1 && (lower[0] == 'l' || lower[0] == 'r') && Array.IndexOf(AsfBones, lower.Substring(1)) >= 0) { side = lower[0] == 'l' ? Side.Left : Side.Right; lower = lower.Substring(1); }
             else if (SideToken(lower, out Side tokenSide, out string rest)) { side = tokenSide; lower = rest; }
+            // OptiTrack Motive: a capital L or R before a capitalised segment (LUArm, LFArm, RThigh, LShoulder).
+            else if (s.Length >= 3 && (s[0] == 'L' || s[0] == 'R') && char.IsUpper(s[1])) { side = s[0] == 'L' ? Side.Left : Side.Right; lower = lower.Substring(1); }
             else if (lower.StartsWith("left", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(4); }
             else if (lower.StartsWith("right", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(5); }
             else if (lower.StartsWith("l_", StringComparison.Ordinal) || lower.StartsWith("l.", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(2); }

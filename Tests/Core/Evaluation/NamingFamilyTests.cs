@@ -9,7 +9,8 @@ namespace AvatarGo.Core.Tests
     /// <summary>
     /// The same motion under the joint names of other skeleton families: the MocapBank clip with every joint renamed as
     /// SMPL, Xsens MVN, Bandai Namco, Daz Genesis, 3ds Max Biped (as BVH writes it), VRoid/VRM, HumanIK, Character Creator,
-    /// Unreal, Rigify's deform bones (DEF-, the neck and head numbered spine joints) and MakeHuman name them. The
+    /// Unreal, Rigify's deform bones (DEF-, the neck and head numbered spine joints), MakeHuman and OptiTrack Motive name
+    /// them. The
     /// names find the same humanoid bones (<see cref="HumanoidNaming"/>), so calibration succeeds and every figure is the
     /// original's: a family the names miss would not calibrate at all.
     /// </summary>
@@ -34,6 +35,7 @@ namespace AvatarGo.Core.Tests
             ["cc"] = new[] { "CC_Base_Hip", "CC_Base_Waist", "CC_Base_Spine01", "CC_Base_L_Clavicle", "CC_Base_L_Upperarm", "CC_Base_L_Forearm", "CC_Base_L_Hand", "CC_Base_R_Clavicle", "CC_Base_R_Upperarm", "CC_Base_R_Forearm", "CC_Base_R_Hand", "CC_Base_NeckTwist01", "CC_Base_Head", "CC_Base_L_Thigh", "CC_Base_L_Calf", "CC_Base_L_Foot", "CC_Base_R_Thigh", "CC_Base_R_Calf", "CC_Base_R_Foot" },
             ["rigify-def"] = new[] { "DEF-spine", "DEF-spine.001", "DEF-spine.003", "DEF-shoulder.L", "DEF-upper_arm.L", "DEF-forearm.L", "DEF-hand.L", "DEF-shoulder.R", "DEF-upper_arm.R", "DEF-forearm.R", "DEF-hand.R", "DEF-spine.004", "DEF-spine.006", "DEF-thigh.L", "DEF-shin.L", "DEF-foot.L", "DEF-thigh.R", "DEF-shin.R", "DEF-foot.R" },
             ["makehuman"] = new[] { "root", "spine05", "spine01", "clavicle.L", "upperarm01.L", "lowerarm01.L", "wrist.L", "clavicle.R", "upperarm01.R", "lowerarm01.R", "wrist.R", "neck01", "head", "upperleg01.L", "lowerleg01.L", "foot.L", "upperleg01.R", "lowerleg01.R", "foot.R" },
+            ["optitrack"] = new[] { "Hip", "Ab", "Chest", "LShoulder", "LUArm", "LFArm", "LHand", "RShoulder", "RUArm", "RFArm", "RHand", "Neck", "Head", "LThigh", "LShin", "LFoot", "RThigh", "RShin", "RFoot" },
             ["unreal"] = new[] { "pelvis", "spine_01", "spine_02", "clavicle_l", "upperarm_l", "lowerarm_l", "hand_l", "clavicle_r", "upperarm_r", "lowerarm_r", "hand_r", "neck_01", "head", "thigh_l", "calf_l", "foot_l", "thigh_r", "calf_r", "foot_r" },
         };
 
@@ -51,7 +53,7 @@ namespace AvatarGo.Core.Tests
             return SessionEvaluator.Evaluate(reader, new PipelineSettings());
         }
 
-        [TestCase("smpl"), TestCase("xsens"), TestCase("bandai"), TestCase("daz"), TestCase("biped"), TestCase("vroid"), TestCase("humanik"), TestCase("cc"), TestCase("unreal"), TestCase("rigify-def"), TestCase("makehuman")]
+        [TestCase("smpl"), TestCase("xsens"), TestCase("bandai"), TestCase("daz"), TestCase("biped"), TestCase("vroid"), TestCase("humanik"), TestCase("cc"), TestCase("unreal"), TestCase("rigify-def"), TestCase("makehuman"), TestCase("optitrack")]
         public void AnotherFamilysNamesGiveTheSameAvatar(string family)
         {
             string text = File.ReadAllText(TestData.Mocap("mocapbank_30fps.bvh"));

@@ -241,6 +241,24 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void OptiTrackMotiveNames()
+        {
+            // Motive's skeleton, as its exports name it (a "Skeleton 002:" namespace in some of them), with toes and an End Site.
+            string ns = "Skeleton 002:";
+            HumanoidMap map = HumanoidNaming.Detect(Build(
+                ns + "Hip", ns + "Ab<" + ns + "Hip", ns + "Chest<" + ns + "Ab", ns + "Neck<" + ns + "Chest", ns + "Head<" + ns + "Neck",
+                ns + "LShoulder<" + ns + "Chest", ns + "LUArm<" + ns + "LShoulder", ns + "LFArm<" + ns + "LUArm", ns + "LHand<" + ns + "LFArm",
+                ns + "RShoulder<" + ns + "Chest", ns + "RUArm<" + ns + "RShoulder", ns + "RFArm<" + ns + "RUArm", ns + "RHand<" + ns + "RFArm",
+                ns + "LThigh<" + ns + "Hip", ns + "LShin<" + ns + "LThigh", ns + "LFoot<" + ns + "LShin", ns + "LToe<" + ns + "LFoot", "LToe_End!<" + ns + "LToe",
+                ns + "RThigh<" + ns + "Hip", ns + "RShin<" + ns + "RThigh", ns + "RFoot<" + ns + "RShin", ns + "RToe<" + ns + "RFoot"));
+            Assert.That(map.MissingRequired(), Is.Empty);
+            Expect(map, "Hips=" + ns + "Hip", "Spine=" + ns + "Ab", "Chest=" + ns + "Chest", "Neck=" + ns + "Neck", "Head=" + ns + "Head",
+                "LeftShoulder=" + ns + "LShoulder", "LeftUpperArm=" + ns + "LUArm", "LeftLowerArm=" + ns + "LFArm", "LeftHand=" + ns + "LHand",
+                "RightUpperArm=" + ns + "RUArm", "LeftUpperLeg=" + ns + "LThigh", "LeftLowerLeg=" + ns + "LShin", "LeftFoot=" + ns + "LFoot",
+                "LeftToes=" + ns + "LToe", "RightLowerLeg=" + ns + "RShin");
+        }
+
+        [Test]
         public void EndSitesStandInForAMissingHandFootAndHead()
         {
             // A forearm, a shin and a neck that end in End Sites: their ends are the wrist, ankle and head pivot.
