@@ -21,7 +21,10 @@ namespace AvatarGo.Core
     /// <c>lowerback</c>, <c>lclavicle</c>, <c>lhumerus</c>, <c>lradius</c>, <c>lwrist</c>, <c>lfemur</c>, <c>ltibia</c>),
     /// Rigify's deform bones (<c>DEF-upper_arm.L</c>, the neck and head <c>DEF-spine.004</c> and <c>DEF-spine.006</c>) and
     /// MakeHuman (<c>upperarm01.L</c>, <c>lowerleg01.L</c>, <c>clavicle.L</c>) and OptiTrack Motive (<c>Hip</c>, <c>Ab</c>,
-    /// <c>LShoulder</c>, <c>LUArm</c>, <c>LFArm</c>, <c>LThigh</c>, <c>LShin</c>). Explicit overrides win.
+    /// <c>LShoulder</c>, <c>LUArm</c>, <c>LFArm</c>, <c>LThigh</c>, <c>LShin</c>), Kinect v2 (<c>SpineBase</c>,
+    /// <c>ShoulderLeft</c> = upper arm, <c>ElbowLeft</c>, <c>HipLeft</c>, <c>AnkleLeft</c> above <c>FootLeft</c>) and Azure
+    /// Kinect (<c>PELVIS</c>, <c>CLAVICLE_LEFT</c>, <c>SHOULDER_LEFT</c>, <c>WRIST_LEFT</c> above <c>HAND_LEFT</c>). Explicit
+    /// overrides win.
     /// </summary>
     /// <remarks>
     /// Rules worth knowing: <c>Shoulder</c> is the clavicle when the same side also has an <c>Arm</c>/<c>UpperArm</c>
@@ -330,6 +333,10 @@ namespace AvatarGo.Core
             else if (lower.StartsWith("r_", StringComparison.Ordinal) || lower.StartsWith("r.", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(2); }
             else if (lower.EndsWith(".l", StringComparison.Ordinal) || lower.EndsWith("_l", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(0, lower.Length - 2); }
             else if (lower.EndsWith(".r", StringComparison.Ordinal) || lower.EndsWith("_r", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(0, lower.Length - 2); }
+            // Kinect: the side as a last word (ShoulderLeft, SHOULDER_LEFT), capitalised or after a separator, not a word
+            // ending in it (upright).
+            else if (SideWordLast(s, lower, "left", out string before)) { side = Side.Left; lower = before; }
+            else if (SideWordLast(s, lower, "right", out before)) { side = Side.Right; lower = before; }
             var chars = new System.Text.StringBuilder(lower.Length);
             foreach (char c in lower)
                 if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) chars.Append(c);
@@ -338,6 +345,18 @@ namespace AvatarGo.Core
         }
 
         private static readonly char[] Separators = { '_', ' ', '.', '-' };
+
+        // True when `name` ends in the word (ShoulderLeft, SHOULDER_LEFT, Hand.left) after something: the name before it.
+        private static bool SideWordLast(string name, string lower, string word, out string before)
+        {
+            before = null;
+            int at = lower.Length - word.Length;
+            if (at < 1 || !lower.EndsWith(word, StringComparison.Ordinal)) return false;
+            bool separated = Array.IndexOf(Separators, lower[at - 1]) >= 0;
+            if (!separated && !char.IsUpper(name[at])) return false;
+            before = lower.Substring(0, separated ? at - 1 : at);
+            return before.Length > 0;
+        }
 
         // The sided bones of the CMU database's ASF skeleton, named after the bone (lhumerus, rtibia).
         private static readonly string[] AsfBones = { "clavicle", "humerus", "radius", "wrist", "hand", "fingers", "thumb", "hipjoint", "femur", "tibia", "foot", "toes" };

@@ -9,8 +9,8 @@ namespace AvatarGo.Core.Tests
     /// <summary>
     /// The same motion under the joint names of other skeleton families: the MocapBank clip with every joint renamed as
     /// SMPL, Xsens MVN, Bandai Namco, Daz Genesis, 3ds Max Biped (as BVH writes it), VRoid/VRM, HumanIK, Character Creator,
-    /// Unreal, Rigify's deform bones (DEF-, the neck and head numbered spine joints), MakeHuman and OptiTrack Motive name
-    /// them. The
+    /// Unreal, Rigify's deform bones (DEF-, the neck and head numbered spine joints), MakeHuman, OptiTrack Motive, Kinect v2
+    /// and Azure Kinect name them (the Kinects' clavicle-less v2 names given a ClavicleLeft for the clip's collar). The
     /// names find the same humanoid bones (<see cref="HumanoidNaming"/>), so calibration succeeds and every figure is the
     /// original's: a family the names miss would not calibrate at all.
     /// </summary>
@@ -36,6 +36,8 @@ namespace AvatarGo.Core.Tests
             ["rigify-def"] = new[] { "DEF-spine", "DEF-spine.001", "DEF-spine.003", "DEF-shoulder.L", "DEF-upper_arm.L", "DEF-forearm.L", "DEF-hand.L", "DEF-shoulder.R", "DEF-upper_arm.R", "DEF-forearm.R", "DEF-hand.R", "DEF-spine.004", "DEF-spine.006", "DEF-thigh.L", "DEF-shin.L", "DEF-foot.L", "DEF-thigh.R", "DEF-shin.R", "DEF-foot.R" },
             ["makehuman"] = new[] { "root", "spine05", "spine01", "clavicle.L", "upperarm01.L", "lowerarm01.L", "wrist.L", "clavicle.R", "upperarm01.R", "lowerarm01.R", "wrist.R", "neck01", "head", "upperleg01.L", "lowerleg01.L", "foot.L", "upperleg01.R", "lowerleg01.R", "foot.R" },
             ["optitrack"] = new[] { "Hip", "Ab", "Chest", "LShoulder", "LUArm", "LFArm", "LHand", "RShoulder", "RUArm", "RFArm", "RHand", "Neck", "Head", "LThigh", "LShin", "LFoot", "RThigh", "RShin", "RFoot" },
+            ["kinect"] = new[] { "SpineBase", "SpineMid", "SpineShoulder", "ClavicleLeft", "ShoulderLeft", "ElbowLeft", "WristLeft", "ClavicleRight", "ShoulderRight", "ElbowRight", "WristRight", "Neck", "Head", "HipLeft", "KneeLeft", "AnkleLeft", "HipRight", "KneeRight", "AnkleRight" },
+            ["azure-kinect"] = new[] { "PELVIS", "SPINE_NAVEL", "SPINE_CHEST", "CLAVICLE_LEFT", "SHOULDER_LEFT", "ELBOW_LEFT", "WRIST_LEFT", "CLAVICLE_RIGHT", "SHOULDER_RIGHT", "ELBOW_RIGHT", "WRIST_RIGHT", "NECK", "HEAD", "HIP_LEFT", "KNEE_LEFT", "ANKLE_LEFT", "HIP_RIGHT", "KNEE_RIGHT", "ANKLE_RIGHT" },
             ["unreal"] = new[] { "pelvis", "spine_01", "spine_02", "clavicle_l", "upperarm_l", "lowerarm_l", "hand_l", "clavicle_r", "upperarm_r", "lowerarm_r", "hand_r", "neck_01", "head", "thigh_l", "calf_l", "foot_l", "thigh_r", "calf_r", "foot_r" },
         };
 
@@ -53,7 +55,7 @@ namespace AvatarGo.Core.Tests
             return SessionEvaluator.Evaluate(reader, new PipelineSettings());
         }
 
-        [TestCase("smpl"), TestCase("xsens"), TestCase("bandai"), TestCase("daz"), TestCase("biped"), TestCase("vroid"), TestCase("humanik"), TestCase("cc"), TestCase("unreal"), TestCase("rigify-def"), TestCase("makehuman"), TestCase("optitrack")]
+        [TestCase("smpl"), TestCase("xsens"), TestCase("bandai"), TestCase("daz"), TestCase("biped"), TestCase("vroid"), TestCase("humanik"), TestCase("cc"), TestCase("unreal"), TestCase("rigify-def"), TestCase("makehuman"), TestCase("optitrack"), TestCase("kinect"), TestCase("azure-kinect")]
         public void AnotherFamilysNamesGiveTheSameAvatar(string family)
         {
             string text = File.ReadAllText(TestData.Mocap("mocapbank_30fps.bvh"));

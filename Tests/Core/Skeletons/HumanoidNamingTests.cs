@@ -259,6 +259,36 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void KinectNames()
+        {
+            // Kinect v2's joints, as its SDK names and links them: no clavicle, the shoulder is the upper arm, a wrist above
+            // the hand and an ankle above the foot; the side a last word, not a word ending in it.
+            HumanoidMap v2 = HumanoidNaming.Detect(Build(
+                "SpineBase", "SpineMid<SpineBase", "SpineShoulder<SpineMid", "Neck<SpineShoulder", "Head<Neck",
+                "ShoulderLeft<SpineShoulder", "ElbowLeft<ShoulderLeft", "WristLeft<ElbowLeft", "HandLeft<WristLeft", "HandTipLeft<HandLeft", "ThumbLeft<HandLeft",
+                "ShoulderRight<SpineShoulder", "ElbowRight<ShoulderRight", "WristRight<ElbowRight", "HandRight<WristRight",
+                "HipLeft<SpineBase", "KneeLeft<HipLeft", "AnkleLeft<KneeLeft", "FootLeft<AnkleLeft",
+                "HipRight<SpineBase", "KneeRight<HipRight", "AnkleRight<KneeRight", "FootRight<AnkleRight", "Upright<Head"));
+            Assert.That(v2.MissingRequired(), Is.Empty);
+            Expect(v2, "Hips=SpineBase", "Spine=SpineMid", "Chest=SpineShoulder", "Neck=Neck", "Head=Head", "LeftUpperArm=ShoulderLeft",
+                "LeftLowerArm=ElbowLeft", "LeftHand=WristLeft", "RightHand=WristRight", "LeftUpperLeg=HipLeft", "LeftLowerLeg=KneeLeft",
+                "LeftFoot=AnkleLeft", "LeftToes=FootLeft", "RightToes=FootRight");
+            Assert.That(v2.Has(HumanoidBone.LeftShoulder), Is.False);
+            Assert.That(v2.BoneOf(v2.Skeleton.IndexOf("Upright")), Is.EqualTo(HumanoidBone.LastBone), "upright is not a right-side joint");
+
+            HumanoidMap azure = HumanoidNaming.Detect(Build(
+                "PELVIS", "SPINE_NAVEL<PELVIS", "SPINE_CHEST<SPINE_NAVEL", "NECK<SPINE_CHEST", "HEAD<NECK", "EYE_LEFT<HEAD", "EYE_RIGHT<HEAD",
+                "CLAVICLE_LEFT<SPINE_CHEST", "SHOULDER_LEFT<CLAVICLE_LEFT", "ELBOW_LEFT<SHOULDER_LEFT", "WRIST_LEFT<ELBOW_LEFT", "HAND_LEFT<WRIST_LEFT",
+                "CLAVICLE_RIGHT<SPINE_CHEST", "SHOULDER_RIGHT<CLAVICLE_RIGHT", "ELBOW_RIGHT<SHOULDER_RIGHT", "WRIST_RIGHT<ELBOW_RIGHT",
+                "HIP_LEFT<PELVIS", "KNEE_LEFT<HIP_LEFT", "ANKLE_LEFT<KNEE_LEFT", "FOOT_LEFT<ANKLE_LEFT",
+                "HIP_RIGHT<PELVIS", "KNEE_RIGHT<HIP_RIGHT", "ANKLE_RIGHT<KNEE_RIGHT", "FOOT_RIGHT<ANKLE_RIGHT"));
+            Assert.That(azure.MissingRequired(), Is.Empty);
+            Expect(azure, "Hips=PELVIS", "Spine=SPINE_NAVEL", "Chest=SPINE_CHEST", "LeftShoulder=CLAVICLE_LEFT", "LeftUpperArm=SHOULDER_LEFT",
+                "LeftLowerArm=ELBOW_LEFT", "LeftHand=WRIST_LEFT", "LeftUpperLeg=HIP_LEFT", "LeftFoot=ANKLE_LEFT", "LeftToes=FOOT_LEFT",
+                "LeftEye=EYE_LEFT", "RightUpperArm=SHOULDER_RIGHT");
+        }
+
+        [Test]
         public void EndSitesStandInForAMissingHandFootAndHead()
         {
             // A forearm, a shin and a neck that end in End Sites: their ends are the wrist, ankle and head pivot.
