@@ -14,11 +14,14 @@ public sealed class BvhInfoCommand : ICommand
     public string Name => "bvh info";
     public string Summary => "Joints, frame count, rate and humanoid mapping of a BVH file";
     public string Help => """
-        avatargo bvh info FILE
+        avatargo bvh info FILE [--map FILE]
 
         Prints the joints of a BVH file (with their channels), its frame count, frame rate and
         duration, the guessed length unit, the humanoid bone found for each joint, and the required
-        humanoid bones that could not be found (none for a usable rig).
+        humanoid bones that could not be found (none for a usable rig); for a usable rig also its up
+        axis and how its knees bend (a mirrored clip bends them backward).
+          --map FILE   the humanoid bones of joints the naming rules miss ('joint name = Bone' lines,
+                       as for 'avatargo simulate')
         Exit codes: 0 ok, 1 unreadable or malformed file (one-line message), 2 bad arguments.
         """;
 
@@ -26,9 +29,10 @@ public sealed class BvhInfoCommand : ICommand
     {
         var a = new ArgReader(args);
         string path = a.Positional0("FILE");
+        string mapPath = a.String("map");
         a.ThrowOnUnknown(1);
         BvhClip clip = BvhReader.ReadFile(path);
-        HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
+        HumanoidMap map = BoneMapFile.Detect(clip.Skeleton, mapPath);
         Skeleton s = clip.Skeleton;
         var inv = CultureInfo.InvariantCulture;
         float unit = clip.GuessMetresPerUnit();

@@ -21,23 +21,25 @@ public sealed class DemoCommand : ICommand
         the fixed-offset baseline, and prints how closely the avatar follows the wearer's true joints.
           --bvh FILE       the clip to use
           --out-bvh FILE   also write the solved avatar (exact offsets) as BVH, to look at in Blender/Unity
-          --seed N, --noise-mm MM, --noise-deg DEG, --misalign-mm MM, --misalign-deg DEG, --rate HZ
+          --seed N, --noise-mm MM, --noise-deg DEG, --misalign-mm MM, --misalign-deg DEG, --rate HZ,
+          --map FILE, --keep-up, --keep-sides
                            as for 'avatargo simulate'
         """;
 
     public int Run(string[] args, TextWriter stdout, TextWriter stderr)
     {
-        var a = new ArgReader(args);
+        var a = new ArgReader(args, "keep-up", "keep-sides");
         string bvh = a.String("bvh") ?? DemoCommandPaths.BundledClip();
         string outBvh = a.String("out-bvh");
         SimulationOptions options = SimulateCommand.Options(a);
+        string mapPath = a.String("map");
         a.ThrowOnUnknown(0);
 
         BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
         SessionSimulator simulator;
         try
         {
-            simulator = new SessionSimulator(clip, options);
+            simulator = new SessionSimulator(clip, options, BoneMapFile.Detect(clip.Skeleton, mapPath));
         }
         catch (ArgumentException e)
         {

@@ -33,6 +33,8 @@ public sealed class SimulateCommand : ICommand
                               with --refine --exercise-seconds S
           --keep-up           simulate the clip with +Y up as it is; by default a clip recorded with another
                               axis up (a Z-up export) is stood up first, and the command says so
+          --map FILE          the humanoid bones of joints the naming rules miss: 'joint name = Bone' lines
+                              (LeftUpperArm, Hips, ...; # comments); the others are found from their names
           --keep-sides        simulate the clip as it is even if its knees bend backward; by default such a clip
                               (a left-handed export, or its sides named the wrong way round) is mirrored left to
                               right first, and the command says so
@@ -45,12 +47,13 @@ public sealed class SimulateCommand : ICommand
         string bvh = a.String("bvh") ?? throw new UsageException("missing --bvh FILE");
         string output = a.String("out") ?? throw new UsageException("missing --out SESSION");
         var options = Options(a);
+        string mapPath = a.String("map");
         a.ThrowOnUnknown(0);
         BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
         SessionSimulator simulator;
         try
         {
-            simulator = new SessionSimulator(clip, options);
+            simulator = new SessionSimulator(clip, options, BoneMapFile.Detect(clip.Skeleton, mapPath));
         }
         catch (ArgumentException e)
         {

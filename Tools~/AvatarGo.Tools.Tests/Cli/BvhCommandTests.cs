@@ -109,6 +109,46 @@ public class BvhCommandTests
         finally { Directory.Delete(dir, true); }
     }
 
+    /// <summary>
+    /// --map: joints whose names the rules miss are given their bones in a file, the rest are still found from the names;
+    /// a bad line or a joint the clip lacks is a one-line error naming it.
+    /// </summary>
+    [Test]
+    public void AMapFileGivesTheBonesOfJointsTheNamesMiss()
+    {
+        string text = File.ReadAllText(Paths.Mocap("mocapbank_30fps.bvh"));
+        string renamed = text.Replace("JOINT LeftShoulder", "JOINT Bone.010").Replace("JOINT LeftElbow", "JOINT Bone.011").Replace("JOINT LeftWrist", "JOINT Bone.012");
+        string dir = Path.Combine(Path.GetTempPath(), "avatargo-map-" + Guid.NewGuid().ToString("N"));
+        Directory.CreateDirectory(dir);
+        try
+        {
+            string clip = Path.Combine(dir, "renamed.bvh"), map = Path.Combine(dir, "map.txt"), bad = Path.Combine(dir, "bad.txt"), absent = Path.Combine(dir, "absent.txt");
+            File.WriteAllText(clip, renamed);
+            File.WriteAllText(map, "# the left arm of renamed.bvh\nBone.010 = LeftUpperArm\nBone.011 = leftlowerarm   # any case\n\nBone.012=LeftHand\n");
+            File.WriteAllText(bad, "Bone.010 = LeftUpperArm\nBone.011 = LeftElbow\n");
+            File.WriteAllText(absent, "Bone.099 = LeftUpperArm\n");
+
+            var without = CliRunner.Run("simulate", "--bvh", clip, "--out", Path.Combine(dir, "a.session"));
+            Assert.That(without.ExitCode, Is.EqualTo(1));
+            StringAssert.Contains("lacks required humanoid bones: LeftUpperArm, LeftLowerArm, LeftHand", without.Stderr);
+
+            var with = CliRunner.Run("simulate", "--bvh", clip, "--out", Path.Combine(dir, "b.session"), "--map", map);
+            Assert.That(with.ExitCode, Is.EqualTo(0), with.Stderr);
+            var info = CliRunner.Run("bvh", "info", clip, "--map", map);
+            StringAssert.Contains("Bone.011  [Zrotation Xrotation Yrotation]  -> LeftLowerArm", info.Stdout);
+            StringAssert.Contains("missing required: none", info.Stdout);
+
+            var badLine = CliRunner.Run("simulate", "--bvh", clip, "--out", Path.Combine(dir, "c.session"), "--map", bad);
+            Assert.That(badLine.ExitCode, Is.EqualTo(1));
+            StringAssert.Contains("bad.txt:2: 'LeftElbow' is not a humanoid bone", badLine.Stderr);
+            var absentJoint = CliRunner.Run("simulate", "--bvh", clip, "--out", Path.Combine(dir, "d.session"), "--map", absent);
+            Assert.That(absentJoint.ExitCode, Is.EqualTo(1));
+            StringAssert.Contains("Bone.099", absentJoint.Stderr);
+            Assert.That(File.Exists(Path.Combine(dir, "c.session")) || File.Exists(Path.Combine(dir, "d.session")), Is.False, "no session written");
+        }
+        finally { Directory.Delete(dir, true); }
+    }
+
     // The clip turned about X at its roots (file units, as read).
     private static AvatarGo.Core.BvhClip TurnedAboutX(AvatarGo.Core.BvhClip clip, float degrees)
     {
