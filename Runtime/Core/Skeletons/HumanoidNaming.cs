@@ -53,7 +53,7 @@ namespace AvatarGo.Core
             int n = skeleton.JointCount;
             var sides = new Side[n];
             var cores = new string[n];
-            for (int j = 0; j < n; j++) Normalise(skeleton.GetName(j), out sides[j], out cores[j]);
+            ReadNames(skeleton, sides, cores);
 
             var bones = new Dictionary<HumanoidBone, int>();
             var used = new HashSet<int>();
@@ -309,11 +309,32 @@ namespace AvatarGo.Core
             return -1;
         }
 
+        // Every joint's side and core name. The sides of OptiTrack Motive (LUArm) and Kinect (ShoulderLeft) names are read
+        // only when they side more joints than every other rule does: on a rig named otherwise a facial EyeLeft or a helper
+        // HandRight must not take a bone from LeftEye or RightHand.
+        private static void ReadNames(Skeleton skeleton, Side[] sides, string[] cores)
+        {
+            int n = skeleton.JointCount, strong = 0, weak = 0;
+            var weakSides = new Side[n];
+            var weakCores = new string[n];
+            for (int j = 0; j < n; j++)
+            {
+                Normalise(skeleton.GetName(j), false, out sides[j], out cores[j]);
+                if (sides[j] != Side.None) strong++;
+                Normalise(skeleton.GetName(j), true, out weakSides[j], out weakCores[j]);
+                if (weakSides[j] != sides[j]) weak++;
+            }
+            if (weak <= strong) return;
+            Array.Copy(weakSides, sides, n);
+            Array.Copy(weakCores, cores, n);
+        }
+
         // Strips a namespace ("mixamorig:"), finds the side (Left/Right prefix, L_/R_ prefix, .L/_L/.R/_R suffix, Daz's
         // lowercase l/r before a capital, or an L/R/C token after a rig prefix: VRoid's J_Bip_L_UpperArm, 3ds Max Biped's
-        // Bip01_L_Thigh), drops a Biped "Bip01" prefix and Daz's "Bend" suffix, and reduces the rest to lower-case letters
-        // and digits.
-        private static void Normalise(string name, out Side side, out string core)
+        // Bip01_L_Thigh; with `motionCapture`, also OptiTrack Motive's capital L/R before a capitalised segment and Kinect's
+        // side as a last word), drops a Biped "Bip01" prefix and Daz's "Bend" suffix, and reduces the rest to lower-case
+        // letters and digits.
+        private static void Normalise(string name, bool motionCapture, out Side side, out string core)
         {
             int colon = name.LastIndexOf(':');
             string s = colon >= 0 ? name.Substring(colon + 1) : name;
@@ -325,18 +346,15 @@ namespace AvatarGo.Core
             if (s.Length >= 3 && (s[0] == 'l' || s[0] == 'r') && char.IsUpper(s[1]) && char.IsLower(s[2])) { side = s[0] == 'l' ? Side.Left : Side.Right; lower = lower.Substring(1); }
             else if (lower.Length > 1 && (lower[0] == 'l' || lower[0] == 'r') && Array.IndexOf(AsfBones, lower.Substring(1)) >= 0) { side = lower[0] == 'l' ? Side.Left : Side.Right; lower = lower.Substring(1); }
             else if (SideToken(lower, out Side tokenSide, out string rest)) { side = tokenSide; lower = rest; }
-            // OptiTrack Motive: a capital L or R before a capitalised segment (LUArm, LFArm, RThigh, LShoulder).
-            else if (s.Length >= 3 && (s[0] == 'L' || s[0] == 'R') && char.IsUpper(s[1])) { side = s[0] == 'L' ? Side.Left : Side.Right; lower = lower.Substring(1); }
             else if (lower.StartsWith("left", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(4); }
             else if (lower.StartsWith("right", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(5); }
             else if (lower.StartsWith("l_", StringComparison.Ordinal) || lower.StartsWith("l.", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(2); }
             else if (lower.StartsWith("r_", StringComparison.Ordinal) || lower.StartsWith("r.", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(2); }
             else if (lower.EndsWith(".l", StringComparison.Ordinal) || lower.EndsWith("_l", StringComparison.Ordinal)) { side = Side.Left; lower = lower.Substring(0, lower.Length - 2); }
             else if (lower.EndsWith(".r", StringComparison.Ordinal) || lower.EndsWith("_r", StringComparison.Ordinal)) { side = Side.Right; lower = lower.Substring(0, lower.Length - 2); }
-            // Kinect: the side as a last word (ShoulderLeft, SHOULDER_LEFT), capitalised or after a separator, not a word
-            // ending in it (upright).
-            else if (SideWordLast(s, lower, "left", out string before)) { side = Side.Left; lower = before; }
-            else if (SideWordLast(s, lower, "right", out before)) { side = Side.Right; lower = before; }
+            else if (motionCapture && CapitalSideFirst(s)) { side = s[0] == 'L' ? Side.Left : Side.Right; lower = lower.Substring(1); }
+            else if (motionCapture && SideWordLast(s, lower, "left", out string before)) { side = Side.Left; lower = before; }
+            else if (motionCapture && SideWordLast(s, lower, "right", out before)) { side = Side.Right; lower = before; }
             var chars = new System.Text.StringBuilder(lower.Length);
             foreach (char c in lower)
                 if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) chars.Append(c);
@@ -344,16 +362,25 @@ namespace AvatarGo.Core
             if (core.Length > 4 && core.EndsWith("bend", StringComparison.Ordinal)) core = core.Substring(0, core.Length - 4);
         }
 
+        // OptiTrack Motive: a capital L or R before a capitalised segment (LShoulder, LUArm, LFArm, RThigh), not a word in
+        // capitals (LUMBAR, LOD0, RIGHTARM).
+        private static bool CapitalSideFirst(string s) =>
+            s.Length >= 3 && (s[0] == 'L' || s[0] == 'R') && char.IsUpper(s[1])
+            && (char.IsLower(s[2]) || (s.Length >= 4 && char.IsUpper(s[2]) && char.IsLower(s[3])));
+
         private static readonly char[] Separators = { '_', ' ', '.', '-' };
 
-        // True when `name` ends in the word (ShoulderLeft, SHOULDER_LEFT, Hand.left) after something: the name before it.
+        // Kinect: true when `name` ends in the word after something, capitalised after a lower-case letter or a digit
+        // (ShoulderLeft) or after a separator (SHOULDER_LEFT, hand.left), not a word ending in it (Upright, UPRIGHT): the
+        // name before it.
         private static bool SideWordLast(string name, string lower, string word, out string before)
         {
             before = null;
             int at = lower.Length - word.Length;
             if (at < 1 || !lower.EndsWith(word, StringComparison.Ordinal)) return false;
             bool separated = Array.IndexOf(Separators, lower[at - 1]) >= 0;
-            if (!separated && !char.IsUpper(name[at])) return false;
+            bool capitalised = char.IsUpper(name[at]) && char.IsLower(name[at + 1]) && (char.IsLower(name[at - 1]) || char.IsDigit(name[at - 1]));
+            if (!separated && !capitalised) return false;
             before = lower.Substring(0, separated ? at - 1 : at);
             return before.Length > 0;
         }
@@ -361,8 +388,8 @@ namespace AvatarGo.Core
         // The sided bones of the CMU database's ASF skeleton, named after the bone (lhumerus, rtibia).
         private static readonly string[] AsfBones = { "clavicle", "humerus", "radius", "wrist", "hand", "fingers", "thumb", "hipjoint", "femur", "tibia", "foot", "toes" };
 
-        // Rigify's DEF- prefix, a namespace written with an underscore (HumanIK's Character1_, Meta's FullBody_) and ARKit's
-        // _joint suffix, which carry no side and no bone.
+        // Rigify's DEF- prefix, a namespace written with an underscore (HumanIK's Character1_, Meta's FullBody_, OptiTrack
+        // Motive's Skeleton1_, SMPL's m_avg_) and ARKit's _joint suffix, which carry no side and no bone.
         private static string StripRigAffixes(string name)
         {
             string lower = name.ToLowerInvariant();
@@ -372,11 +399,20 @@ namespace AvatarGo.Core
             if (underscore > 0 && underscore < lower.Length - 1)
             {
                 string prefix = lower.Substring(0, underscore);
-                bool character = prefix.StartsWith("character", StringComparison.Ordinal);
-                for (int i = 9; character && i < prefix.Length; i++) character = prefix[i] >= '0' && prefix[i] <= '9';
-                if (character || prefix == "fullbody") name = name.Substring(underscore + 1);
+                if (IsNumbered(prefix, "character") || IsNumbered(prefix, "skeleton") || prefix == "fullbody") name = name.Substring(underscore + 1);
+                else if ((prefix == "m" || prefix == "f") && lower.StartsWith(prefix + "_avg_", StringComparison.Ordinal) && lower.Length > 6)
+                    name = name.Substring(6); // SMPL's FBX: m_avg_L_Hip, f_avg_Neck
             }
             return name;
+        }
+
+        // "character", "character1", "skeleton002": a word followed by digits only.
+        private static bool IsNumbered(string token, string word)
+        {
+            if (!token.StartsWith(word, StringComparison.Ordinal)) return false;
+            for (int i = word.Length; i < token.Length; i++)
+                if (token[i] < '0' || token[i] > '9') return false;
+            return true;
         }
 
         // A side token after a rig prefix ("j_bip_l_upperarm", "bip01_l_thigh", "cc_base_l_thigh"; "c" marks the centre), or a

@@ -288,6 +288,62 @@ namespace AvatarGo.Core.Tests
                 "LeftEye=EYE_LEFT", "RightUpperArm=SHOULDER_RIGHT");
         }
 
+        // A Unity-style rig in one name pattern: NAME(bone) gives each joint's name ("Left" + bone, "LEFT" + bone, ...).
+        private static string[] Rig(Func<string, string> left, Func<string, string> right, params string[] spine)
+        {
+            var e = new List<string> { spine[0] };
+            for (int i = 1; i < spine.Length; i++) e.Add(spine[i] + "<" + spine[i - 1]);
+            string chest = spine[spine.Length - 3], neck = spine[spine.Length - 2];
+            foreach (Func<string, string> side in new[] { left, right })
+            {
+                e.Add(side("Shoulder") + "<" + chest); e.Add(side("Arm") + "<" + side("Shoulder")); e.Add(side("ForeArm") + "<" + side("Arm")); e.Add(side("Hand") + "<" + side("ForeArm"));
+                e.Add(side("UpLeg") + "<" + spine[0]); e.Add(side("Leg") + "<" + side("UpLeg")); e.Add(side("Foot") + "<" + side("Leg"));
+            }
+            return e.ToArray();
+        }
+
+        [Test]
+        public void MotionCaptureSideRulesLeaveOtherRigsAsTheyWere()
+        {
+            // Found in review: the OptiTrack and Kinect side rules, read on every rig, took names in capitals (LEFTARM, LUMBAR,
+            // UPRIGHT) apart and let a facial EyeLeft or a helper HandRight take a bone. They are read only where they side
+            // more joints than the other rules.
+            HumanoidMap caps = HumanoidNaming.Detect(Build(Rig(b => "LEFT" + b.ToUpperInvariant(), b => "RIGHT" + b.ToUpperInvariant(), "HIPS", "LUMBAR", "UPRIGHT", "CHEST", "NECK", "HEAD")));
+            Assert.That(caps.MissingRequired(), Is.Empty);
+            Expect(caps, "LeftUpperArm=LEFTARM", "RightHand=RIGHTHAND", "LeftLowerLeg=LEFTLEG", "Spine=LUMBAR", "Chest=UPRIGHT", "UpperChest=CHEST");
+
+            var withFace = new List<string>(Rig(b => "Left" + b, b => "Right" + b, "Hips", "Spine", "Chest", "Neck", "Head"));
+            withFace.InsertRange(6, new[] { "EyeLeft<Head", "EyeRight<Head", "BrowLeft<Head", "LeftEye<Head", "RightEye<Head", "HandRight<Chest" });
+            HumanoidMap face = HumanoidNaming.Detect(Build(withFace.ToArray()));
+            Expect(face, "LeftEye=LeftEye", "RightEye=RightEye", "RightHand=RightHand");
+            Assert.That(face.BoneOf(face.Skeleton.IndexOf("EyeLeft")), Is.EqualTo(HumanoidBone.LastBone));
+        }
+
+        [Test]
+        public void MotiveTakePrefixAndSmplFbxNames()
+        {
+            // Motive's take prefix (Skeleton1_LUArm) and SMPL's FBX prefix (m_avg_L_Hip, m_avg_Neck).
+            HumanoidMap motive = HumanoidNaming.Detect(Build(
+                "Skeleton1_Hip", "Skeleton1_Ab<Skeleton1_Hip", "Skeleton1_Chest<Skeleton1_Ab", "Skeleton1_Neck<Skeleton1_Chest", "Skeleton1_Head<Skeleton1_Neck",
+                "Skeleton1_LShoulder<Skeleton1_Chest", "Skeleton1_LUArm<Skeleton1_LShoulder", "Skeleton1_LFArm<Skeleton1_LUArm", "Skeleton1_LHand<Skeleton1_LFArm",
+                "Skeleton1_RShoulder<Skeleton1_Chest", "Skeleton1_RUArm<Skeleton1_RShoulder", "Skeleton1_RFArm<Skeleton1_RUArm", "Skeleton1_RHand<Skeleton1_RFArm",
+                "Skeleton1_LThigh<Skeleton1_Hip", "Skeleton1_LShin<Skeleton1_LThigh", "Skeleton1_LFoot<Skeleton1_LShin",
+                "Skeleton1_RThigh<Skeleton1_Hip", "Skeleton1_RShin<Skeleton1_RThigh", "Skeleton1_RFoot<Skeleton1_RShin"));
+            Assert.That(motive.MissingRequired(), Is.Empty);
+            Expect(motive, "LeftUpperArm=Skeleton1_LUArm", "RightLowerLeg=Skeleton1_RShin", "Spine=Skeleton1_Ab");
+
+            HumanoidMap smpl = HumanoidNaming.Detect(Build(
+                "m_avg_root", "m_avg_Pelvis<m_avg_root", "m_avg_Spine1<m_avg_Pelvis", "m_avg_Spine2<m_avg_Spine1", "m_avg_Spine3<m_avg_Spine2",
+                "m_avg_Neck<m_avg_Spine3", "m_avg_Head<m_avg_Neck",
+                "m_avg_L_Collar<m_avg_Spine3", "m_avg_L_Shoulder<m_avg_L_Collar", "m_avg_L_Elbow<m_avg_L_Shoulder", "m_avg_L_Wrist<m_avg_L_Elbow", "m_avg_L_Hand<m_avg_L_Wrist",
+                "m_avg_R_Collar<m_avg_Spine3", "m_avg_R_Shoulder<m_avg_R_Collar", "m_avg_R_Elbow<m_avg_R_Shoulder", "m_avg_R_Wrist<m_avg_R_Elbow",
+                "m_avg_L_Hip<m_avg_Pelvis", "m_avg_L_Knee<m_avg_L_Hip", "m_avg_L_Ankle<m_avg_L_Knee", "m_avg_L_Foot<m_avg_L_Ankle",
+                "m_avg_R_Hip<m_avg_Pelvis", "m_avg_R_Knee<m_avg_R_Hip", "m_avg_R_Ankle<m_avg_R_Knee"));
+            Assert.That(smpl.MissingRequired(), Is.Empty);
+            Expect(smpl, "Hips=m_avg_Pelvis", "Neck=m_avg_Neck", "Head=m_avg_Head", "LeftShoulder=m_avg_L_Collar", "LeftUpperArm=m_avg_L_Shoulder",
+                "LeftHand=m_avg_L_Wrist", "LeftFoot=m_avg_L_Ankle", "LeftToes=m_avg_L_Foot");
+        }
+
         [Test]
         public void EndSitesStandInForAMissingHandFootAndHead()
         {
