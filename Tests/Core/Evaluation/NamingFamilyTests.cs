@@ -41,7 +41,11 @@ namespace AvatarGo.Core.Tests
             ["unreal"] = new[] { "pelvis", "spine_01", "spine_02", "clavicle_l", "upperarm_l", "lowerarm_l", "hand_l", "clavicle_r", "upperarm_r", "lowerarm_r", "hand_r", "neck_01", "head", "thigh_l", "calf_l", "foot_l", "thigh_r", "calf_r", "foot_r" },
         };
 
-        private static BvhClip Renamed(string text, string[] names)
+        /// <summary>A family's names for the MocapBank clip's joints.</summary>
+        internal static string[] FamilyNames(string family) => Families[family];
+
+        /// <summary>The MocapBank clip's text with its joints renamed to <paramref name="names"/> (in <see cref="Joints"/>' order), read in metres.</summary>
+        internal static BvhClip Renamed(string text, string[] names)
         {
             var rename = new Dictionary<string, string>();
             for (int i = 0; i < Joints.Length; i++) rename[Joints[i]] = names[i];
