@@ -18,8 +18,6 @@ namespace AvatarGo.Simulation
         public static readonly DeviceRole[] DeviceRoles =
             { DeviceRole.Head, DeviceRole.RightHand, DeviceRole.LeftHand, DeviceRole.LeftFoot, DeviceRole.Pelvis, DeviceRole.RightFoot };
 
-        private const float BentKneeDegrees = 20f;
-
         private readonly BvhClip _clip;
         private readonly HumanoidMap _map;
         private readonly SimulationOptions _options;
@@ -35,7 +33,7 @@ namespace AvatarGo.Simulation
             if (!(frames < int.MaxValue)) throw new ArgumentException($"The clip is too long to simulate at {_options.Rate} Hz ({(long)Math.Min(frames, long.MaxValue)} frames).", nameof(clip));
             _map = map ?? HumanoidNaming.Detect(clip.Skeleton);
             _map.RequireComplete(nameof(clip));
-            if (_options.MirrorBackwardClip && LooksMirrored(clip, _map, out _, out _))
+            if (_options.MirrorBackwardClip && ClipConventions.LooksMirrored(clip, _map, out _, out _))
             {
                 // The same joints play the same bones on the mirrored skeleton.
                 Mirrored = true;
@@ -45,7 +43,7 @@ namespace AvatarGo.Simulation
                     if (_map.Has((HumanoidBone)b)) bones.Add(new KeyValuePair<HumanoidBone, string>((HumanoidBone)b, _map.NameOf((HumanoidBone)b)));
                 _map = new HumanoidMap(clip.Skeleton, bones);
             }
-            Upright = _options.StandClipUp ? UprightTurn(clip, _map) : Quaternion.Identity;
+            Upright = _options.StandClipUp ? ClipConventions.UprightTurn(clip, _map) : Quaternion.Identity;
         }
 
         /// <summary>
@@ -56,69 +54,13 @@ namespace AvatarGo.Simulation
 
         /// <summary>
         /// Whether the clip was mirrored left to right (<see cref="BvhClip.Mirrored"/>) before anything else: its knees bent
-        /// backward (<see cref="LooksMirrored"/>). That is a
+        /// backward (<see cref="ClipConventions.LooksMirrored"/>). That is a
         /// clip written in a left-handed frame or with its sides named the wrong way round (its joints named Left on the
         /// body's right): worn as it is, its wearer's knees would bend backward. <see cref="SimulationOptions.MirrorBackwardClip"/>
         /// false keeps every clip as it is.
         /// </summary>
         public bool Mirrored { get; }
 
-        /// <summary>
-        /// Whether <paramref name="clip"/>'s knees bend backward in at least <see cref="MirroredMinimumBends"/> bent frames
-        /// and twice as many as they bend forward (<see cref="CountKneeBends"/>, whose counts are returned): its joints named
-        /// Left are on the body's right.
-        /// </summary>
-        public static bool LooksMirrored(BvhClip clip, HumanoidMap map, out int forward, out int backward)
-        {
-            CountKneeBends(clip, map, out forward, out backward);
-            return backward >= MirroredMinimumBends && backward >= 2 * forward;
-        }
-
-        /// <summary>The fewest backward knee bends that make a clip look mirrored (10): a few frames of a hyperextended knee do not.</summary>
-        public const int MirroredMinimumBends = 10;
-
-        /// <summary>
-        /// Counts, over every frame of <paramref name="clip"/> and both knees bent 20° or more, the knees that bend forward and
-        /// those that bend backward: the knee's hinge axis (the thigh crossed with the shin) against the hip line (left to
-        /// right hip); a hinge axis more than 60° from the hip line counts neither way. It reads the legs and the pelvis only,
-        /// so a trunk folded forward or a clip lying down changes nothing, nor do the rest pose, the bones' axes or the up axis.
-        /// </summary>
-        public static void CountKneeBends(BvhClip clip, HumanoidMap map, out int forward, out int backward)
-        {
-            if (clip == null) throw new ArgumentNullException(nameof(clip));
-            if (map == null) throw new ArgumentNullException(nameof(map));
-            forward = backward = 0;
-            Skeleton s = clip.Skeleton;
-            var local = new RigidPose[s.JointCount];
-            var world = new RigidPose[s.JointCount];
-            float bent = MathF.Cos(BentKneeDegrees * Rotations.Deg2Rad);
-            for (int f = 0; f < clip.FrameCount; f++)
-            {
-                clip.GetWorldPoses(f, local, world);
-                Vector3 leftHip = world[map[HumanoidBone.LeftUpperLeg]].Position, rightHip = world[map[HumanoidBone.RightUpperLeg]].Position;
-                Vector3 hipLine = rightHip - leftHip;
-                if (!(hipLine.LengthSquared() > 1e-12f)) continue;
-                hipLine = Vector3.Normalize(hipLine);
-                for (int side = 0; side < 2; side++)
-                {
-                    BodySide body = side == 0 ? BodySide.Left : BodySide.Right;
-                    Vector3 hip = side == 0 ? leftHip : rightHip;
-                    Vector3 knee = world[map[HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, body)]].Position;
-                    Vector3 ankle = world[map[HumanoidBones.OnSide(HumanoidBone.LeftFoot, body)]].Position;
-                    Vector3 thigh = knee - hip, shin = ankle - knee;
-                    if (!(thigh.LengthSquared() > 1e-12f && shin.LengthSquared() > 1e-12f)) continue;
-                    thigh = Vector3.Normalize(thigh);
-                    shin = Vector3.Normalize(shin);
-                    if (Vector3.Dot(thigh, shin) > bent) continue;
-                    // A knee bending forward turns the shin back under the thigh: thigh × shin points to the body's right.
-                    float along = Vector3.Dot(Vector3.Normalize(Vector3.Cross(thigh, shin)), hipLine);
-                    if (along > HingeOnHipLine) forward++;
-                    else if (along < -HingeOnHipLine) backward++;
-                }
-            }
-        }
-
-        private const float HingeOnHipLine = 0.5f; // cos 60°
 
         /// <summary>
         /// The turn that stands the clip's motion up (applied to its roots before anything else): the identity for a clip
@@ -129,38 +71,6 @@ namespace AvatarGo.Simulation
         /// the mean lies within 25° of it. <see cref="SimulationOptions.StandClipUp"/> false keeps every clip as it is.
         /// </summary>
         public Quaternion Upright { get; }
-
-        /// <summary>
-        /// The turn that would stand <paramref name="clip"/> up (<see cref="Upright"/>): the identity for a clip whose up is +Y
-        /// or whose frames disagree about their up.
-        /// </summary>
-        public static Quaternion UprightTurn(BvhClip clip, HumanoidMap map)
-        {
-            if (clip == null) throw new ArgumentNullException(nameof(clip));
-            if (map == null) throw new ArgumentNullException(nameof(map));
-            Skeleton s = clip.Skeleton;
-            var local = new RigidPose[s.JointCount];
-            var world = new RigidPose[s.JointCount];
-            int head = map[HumanoidBone.Head], left = map[HumanoidBone.LeftFoot], right = map[HumanoidBone.RightFoot];
-            Vector3 sum = Vector3.Zero;
-            int step = Math.Max(1, clip.FrameCount / 200);
-            for (int f = 0; f < clip.FrameCount; f += step)
-            {
-                clip.GetWorldPoses(f, local, world);
-                Vector3 up = world[head].Position - 0.5f * (world[left].Position + world[right].Position);
-                if (up.LengthSquared() > 1e-12f) sum += Vector3.Normalize(up);
-            }
-            int samples = (clip.FrameCount + step - 1) / step;
-            Vector3 mean = sum / Math.Max(1, samples);
-            if (mean.Y >= 0.5f || mean.Length() < 0.8f) return Quaternion.Identity;
-            Vector3 direction = Vector3.Normalize(mean);
-            Vector3 axis = Vector3.Zero;
-            foreach (Vector3 candidate in new[] { Vector3.UnitX, -Vector3.UnitX, -Vector3.UnitY, Vector3.UnitZ, -Vector3.UnitZ })
-                if (Vector3.Dot(direction, candidate) > 0.906f) axis = candidate; // within 25°
-            if (axis == Vector3.Zero) return Quaternion.Identity;
-            // A half turn about X for -Y; otherwise the quarter turn from the axis to +Y.
-            return axis == -Vector3.UnitY ? Quaternion.CreateFromAxisAngle(Vector3.UnitX, MathF.PI) : Rotations.FromTo(axis, Vector3.UnitY);
-        }
 
         private void StandUp(RigidPose[] local)
         {

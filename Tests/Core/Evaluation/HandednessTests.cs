@@ -9,7 +9,7 @@ namespace AvatarGo.Core.Tests
     /// <summary>
     /// A clip written in a left-handed frame reads as its own mirror image: the joints named Left end on the body's right,
     /// and a wearer made from it bends its knees backward (before: calibration succeeded and every knee of the avatar was
-    /// flipped). The simulator sees the knees bend backward (<see cref="SessionSimulator.CountKneeBends"/>) and mirrors the
+    /// flipped). The simulator sees the knees bend backward (<see cref="ClipConventions.CountKneeBends"/>) and mirrors the
     /// clip back (<see cref="SessionSimulator.Mirrored"/>), so the avatar follows it as it follows the original. A clip whose
     /// sides are named the wrong way round is mirrored too: it becomes the mirror image of the motion, a valid person.
     /// </summary>
@@ -60,9 +60,9 @@ namespace AvatarGo.Core.Tests
         private static void AssertKneesBendForward(BvhClip clip)
         {
             BvhClip mirrored = clip.Mirrored();
-            SessionSimulator.CountKneeBends(clip, HumanoidNaming.Detect(clip.Skeleton), out int forward, out int backward);
-            SessionSimulator.CountKneeBends(mirrored, HumanoidNaming.Detect(mirrored.Skeleton), out int mirroredForward, out int mirroredBackward);
-            Assert.That(forward, Is.GreaterThanOrEqualTo(SessionSimulator.MirroredMinimumBends));
+            ClipConventions.CountKneeBends(clip, HumanoidNaming.Detect(clip.Skeleton), out int forward, out int backward);
+            ClipConventions.CountKneeBends(mirrored, HumanoidNaming.Detect(mirrored.Skeleton), out int mirroredForward, out int mirroredBackward);
+            Assert.That(forward, Is.GreaterThanOrEqualTo(ClipConventions.MirroredMinimumBends));
             Assert.That(backward * 20, Is.LessThanOrEqualTo(forward), "a real clip's knees bend forward (at most 5 % counted backward)");
             Assert.That((mirroredForward, mirroredBackward), Is.EqualTo((backward, forward)), "the mirror image bends each knee the other way");
         }
@@ -93,8 +93,8 @@ namespace AvatarGo.Core.Tests
                 frames.Add(local);
             }
             BvhClip crouch = BvhClip.FromPoses(s, frames, clip.FrameTime);
-            bool mirrored = SessionSimulator.LooksMirrored(crouch, HumanoidNaming.Detect(s), out int forward, out int backward);
-            Assert.That(forward, Is.GreaterThanOrEqualTo(2 * SessionSimulator.MirroredMinimumBends), "the crouch bends its knees");
+            bool mirrored = ClipConventions.LooksMirrored(crouch, HumanoidNaming.Detect(s), out int forward, out int backward);
+            Assert.That(forward, Is.GreaterThanOrEqualTo(2 * ClipConventions.MirroredMinimumBends), "the crouch bends its knees");
             Assert.That(mirrored, Is.False, $"{forward} forward, {backward} backward");
         }
 

@@ -55,10 +55,10 @@ public sealed class BvhInfoCommand : ICommand
         stdout.WriteLine($"humanoid: {map.Count} bones mapped; missing required: {(missing.Count == 0 ? "none" : string.Join(", ", missing))}");
         if (missing.Count == 0)
         {
-            Quaternion upright = SessionSimulator.UprightTurn(clip, map);
+            Quaternion upright = ClipConventions.UprightTurn(clip, map);
             stdout.WriteLine(upright == Quaternion.Identity ? "up: +Y"
                 : string.Create(inv, $"up: {AxisName(Vector3.Transform(Vector3.UnitY, Quaternion.Conjugate(upright)))} (not +Y: simulate turns the motion {Rotations.AngleDegrees(Quaternion.Identity, upright):0} deg to stand it up)"));
-            bool mirrored = SessionSimulator.LooksMirrored(clip, map, out int forward, out int backward);
+            bool mirrored = ClipConventions.LooksMirrored(clip, map, out int forward, out int backward);
             stdout.WriteLine($"knees bent 20 deg or more: {forward} bend forward, {backward} backward{(mirrored ? " (its sides look mirrored: a left-handed export, or Left and Right named the wrong way round; simulate mirrors it)" : "")}");
         }
         return 0;
