@@ -38,10 +38,7 @@ namespace AvatarGo.Simulation
                 // The same joints play the same bones on the mirrored skeleton.
                 Mirrored = true;
                 _clip = clip = clip.Mirrored();
-                var bones = new List<KeyValuePair<HumanoidBone, string>>();
-                for (int b = 0; b < HumanoidBones.Count; b++)
-                    if (_map.Has((HumanoidBone)b)) bones.Add(new KeyValuePair<HumanoidBone, string>((HumanoidBone)b, _map.NameOf((HumanoidBone)b)));
-                _map = new HumanoidMap(clip.Skeleton, bones);
+                _map = new HumanoidMap(clip.Skeleton, _map.Pairs());
             }
             Upright = _options.StandClipUp ? ClipConventions.UprightTurn(clip, _map) : Quaternion.Identity;
         }
@@ -54,13 +51,11 @@ namespace AvatarGo.Simulation
 
         /// <summary>
         /// Whether the clip was mirrored left to right (<see cref="BvhClip.Mirrored"/>) before anything else: its knees bent
-        /// backward (<see cref="ClipConventions.LooksMirrored"/>). That is a
-        /// clip written in a left-handed frame or with its sides named the wrong way round (its joints named Left on the
-        /// body's right): worn as it is, its wearer's knees would bend backward. <see cref="SimulationOptions.MirrorBackwardClip"/>
-        /// false keeps every clip as it is.
+        /// backward (<see cref="ClipConventions.LooksMirrored"/>). That is a clip written in a left-handed frame or with its
+        /// sides named the wrong way round (its joints named Left on the body's right): worn as it is, its wearer's knees
+        /// would bend backward. <see cref="SimulationOptions.MirrorBackwardClip"/> false keeps every clip as it is.
         /// </summary>
         public bool Mirrored { get; }
-
 
         /// <summary>
         /// The turn that stands the clip's motion up (applied to its roots before anything else): the identity for a clip

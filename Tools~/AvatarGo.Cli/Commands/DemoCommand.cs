@@ -28,7 +28,7 @@ public sealed class DemoCommand : ICommand
 
     public int Run(string[] args, TextWriter stdout, TextWriter stderr)
     {
-        var a = new ArgReader(args, "keep-up", "keep-sides");
+        var a = new ArgReader(args, SimulateCommand.OptionFlags);
         string bvh = a.String("bvh") ?? DemoCommandPaths.BundledClip();
         string outBvh = a.String("out-bvh");
         SimulationOptions options = SimulateCommand.Options(a);

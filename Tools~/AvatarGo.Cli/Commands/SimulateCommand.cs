@@ -43,7 +43,7 @@ public sealed class SimulateCommand : ICommand
 
     public int Run(string[] args, TextWriter stdout, TextWriter stderr)
     {
-        var a = new ArgReader(args, "keep-up", "keep-sides");
+        var a = new ArgReader(args, OptionFlags);
         string bvh = a.String("bvh") ?? throw new UsageException("missing --bvh FILE");
         string output = a.String("out") ?? throw new UsageException("missing --out SESSION");
         var options = Options(a);
@@ -115,6 +115,9 @@ public sealed class SimulateCommand : ICommand
         int parameter = m.IndexOf(" (Parameter '", StringComparison.Ordinal);
         return (parameter >= 0 ? m.Substring(0, parameter) : m).Split('\n')[0].TrimEnd('\r');
     }
+
+    /// <summary>The options of <see cref="Options"/> that take no value: an ArgReader must be told them.</summary>
+    internal static readonly string[] OptionFlags = { "keep-up", "keep-sides" };
 
     /// <summary>The simulation options shared by simulate and demo.</summary>
     internal static SimulationOptions Options(ArgReader a)
