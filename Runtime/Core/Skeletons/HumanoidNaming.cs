@@ -23,8 +23,10 @@ namespace AvatarGo.Core
     /// MakeHuman (<c>upperarm01.L</c>, <c>lowerleg01.L</c>, <c>clavicle.L</c>) and OptiTrack Motive (<c>Hip</c>, <c>Ab</c>,
     /// <c>LShoulder</c>, <c>LUArm</c>, <c>LFArm</c>, <c>LThigh</c>, <c>LShin</c>), Kinect v2 (<c>SpineBase</c>,
     /// <c>ShoulderLeft</c> = upper arm, <c>ElbowLeft</c>, <c>HipLeft</c>, <c>AnkleLeft</c> above <c>FootLeft</c>) and Azure
-    /// Kinect (<c>PELVIS</c>, <c>CLAVICLE_LEFT</c>, <c>SHOULDER_LEFT</c>, <c>WRIST_LEFT</c> above <c>HAND_LEFT</c>). Explicit
-    /// overrides win.
+    /// Kinect (<c>PELVIS</c>, <c>CLAVICLE_LEFT</c>, <c>SHOULDER_LEFT</c>, <c>WRIST_LEFT</c> above <c>HAND_LEFT</c>). Fingers
+    /// numbered by finger (<c>LeftHandIndex1</c>, <c>lMid1</c>), named by phalanx (<c>LeftIndexProximal</c>, VRM 1.0's
+    /// <c>leftThumbMetacarpal</c>), 3ds Max Biped's <c>Finger0</c> to <c>Finger42</c> and MakeHuman's <c>finger1-1</c> to
+    /// <c>finger5-3</c>. Explicit overrides win.
     /// </summary>
     /// <remarks>
     /// Rules worth knowing: <c>Shoulder</c> is the clavicle when the same side also has an <c>Arm</c>/<c>UpperArm</c>
@@ -95,7 +97,7 @@ namespace AvatarGo.Core
                 // the "foot" (SMPL: L_Ankle, then L_Foot at the toes).
                 int foot = Find(skeleton, cores, sides, side, lowLeg, "foot", "ankle", "footankle");
                 int ankle = Find(skeleton, cores, sides, side, lowLeg, "ankle");
-                int toes = Find(skeleton, cores, sides, side, foot, "toebase", "toe", "toes", "ball", "toe0", "football");
+                int toes = Find(skeleton, cores, sides, side, foot, "toebase", "toe", "toes", "ball", "toe0", "football", "toe11"); // toe11: MakeHuman's big toe, toe1-1
                 if (ankle >= 0 && foot >= 0 && foot != ankle && skeleton.IsAncestorOrSelf(ankle, foot))
                 {
                     if (toes < 0) toes = foot;
@@ -129,18 +131,16 @@ namespace AvatarGo.Core
                 // Fingers: three phalanges per finger, below the hand.
                 if (hand >= 0 && !skeleton.IsEndSite(hand))
                 {
-                    string[][] fingerNames =
-                    {
-                        new[] { "thumb" }, new[] { "index" }, new[] { "middle" }, new[] { "ring" }, new[] { "pinky", "little" },
-                    };
+                    BodySide bodySide = left ? BodySide.Left : BodySide.Right;
+                    FingerNumbering numbering = NumberingOf(skeleton, cores, sides, side, hand);
                     for (int f = 0; f < 5; f++)
                     {
                         int parent = hand;
                         for (int phalanx = 0; phalanx < 3; phalanx++)
                         {
-                            int joint = FindFinger(skeleton, cores, sides, side, parent, fingerNames[f], phalanx + 1);
+                            int joint = FindPhalanx(skeleton, cores, sides, side, hand, parent, numbering, f, phalanx);
                             if (joint < 0) break;
-                            Put(HumanoidBones.Finger(left ? BodySide.Left : BodySide.Right, (Finger)f, (Phalanx)phalanx), joint);
+                            Put(HumanoidBones.Finger(bodySide, (Finger)f, (Phalanx)phalanx), joint);
                             parent = joint;
                         }
                     }
@@ -293,18 +293,65 @@ namespace AvatarGo.Core
         private static bool IsNamed(string core, string key, string suffix) =>
             core.Length == key.Length + suffix.Length && core.StartsWith(key, StringComparison.Ordinal) && core.EndsWith(suffix, StringComparison.Ordinal);
 
-        private static int FindFinger(Skeleton s, string[] cores, Side[] sides, Side side, int under, string[] fingers, int number)
+        // How a rig names its fingers' phalanges. By finger: a finger word and the phalanx's number or name (Mixamo's
+        // LeftHandIndex1, Unreal's index_01_l, Rigify's f_index.01.L, Unity's and VRM's LeftIndexProximal); 3ds Max Biped's
+        // Finger0 (thumb) to Finger4, their phalanges Finger0, Finger01, Finger02; MakeHuman's finger1-1 (thumb) to finger5-3.
+        private enum FingerNumbering { ByFinger, Biped, MakeHuman }
+
+        // The finger words, thumb to little finger (Daz and Character Creator call the middle finger "Mid").
+        private static readonly string[][] FingerWords =
         {
-            string n1 = number.ToString(CultureInfo.InvariantCulture);
-            string n2 = "0" + n1;
-            foreach (string finger in fingers)
+            new[] { "thumb" }, new[] { "index" }, new[] { "middle", "mid" }, new[] { "ring" }, new[] { "pinky", "little" },
+        };
+
+        // Phalanges by name, proximal first. A thumb with a metacarpal (VRM 1.0, OpenXR, Meta) has a proximal and a distal
+        // after it, and its metacarpal is the humanoid thumb's first bone, as Unity maps it; the other fingers' metacarpals
+        // are not humanoid bones.
+        private static readonly string[] PhalanxWords = { "proximal", "intermediate", "distal" };
+        private static readonly string[] ThumbWithMetacarpal = { "metacarpal", "proximal", "distal" };
+
+        // Biped when a Finger0 is under the hand, MakeHuman when a finger1-1 is (and no Finger0: Biped's Finger11 is the index
+        // finger's second phalanx), else by finger.
+        private static FingerNumbering NumberingOf(Skeleton s, string[] cores, Side[] sides, Side side, int hand)
+        {
+            if (FindUnderHand(s, cores, sides, side, hand, hand, "finger0") >= 0) return FingerNumbering.Biped;
+            if (FindUnderHand(s, cores, sides, side, hand, hand, "finger11") >= 0) return FingerNumbering.MakeHuman;
+            return FingerNumbering.ByFinger;
+        }
+
+        // Phalanx `phalanx` (0 proximal to 2 distal) of finger `finger` (0 thumb to 4 little), below `under` (the hand or the
+        // previous phalanx).
+        private static int FindPhalanx(Skeleton s, string[] cores, Side[] sides, Side side, int hand, int under, FingerNumbering numbering, int finger, int phalanx)
+        {
+            string number = (phalanx + 1).ToString(CultureInfo.InvariantCulture);
+            switch (numbering)
+            {
+                case FingerNumbering.Biped:
+                    return FindUnderHand(s, cores, sides, side, hand, under, "finger" + finger.ToString(CultureInfo.InvariantCulture) + (phalanx == 0 ? "" : phalanx.ToString(CultureInfo.InvariantCulture)));
+                case FingerNumbering.MakeHuman:
+                    return FindUnderHand(s, cores, sides, side, hand, under, "finger" + (finger + 1).ToString(CultureInfo.InvariantCulture) + number);
+            }
+            foreach (string word in FingerWords[finger])
+            {
+                string[] named = finger == 0 && FindUnderHand(s, cores, sides, side, hand, hand, word + "metacarpal") >= 0 ? ThumbWithMetacarpal : PhalanxWords;
+                int joint = FindUnderHand(s, cores, sides, side, hand, under, word + number, word + "0" + number, word + named[phalanx]);
+                if (joint >= 0) return joint;
+            }
+            return -1;
+        }
+
+        // The first joint below `under` on the side whose core name, after the hand's own prefix (Mixamo's LeftHandIndex1,
+        // Meta's LeftHandIndexProximal) or Rigify's f_ (f_index.01.L), is one of the keys.
+        private static int FindUnderHand(Skeleton s, string[] cores, Side[] sides, Side side, int hand, int under, params string[] keys)
+        {
+            foreach (string key in keys)
                 for (int j = 0; j < cores.Length; j++)
                 {
-                    if (sides[j] != side || s.IsEndSite(j) || !s.IsAncestorOrSelf(under, j) || j == under) continue;
+                    if (sides[j] != side || s.IsEndSite(j) || j == under || !s.IsAncestorOrSelf(under, j) || !s.IsAncestorOrSelf(hand, j)) continue;
                     string c = cores[j];
                     if (c.StartsWith("hand", StringComparison.Ordinal)) c = c.Substring(4);
                     if (c.StartsWith("f", StringComparison.Ordinal) && !c.StartsWith("finger", StringComparison.Ordinal)) c = c.Substring(1); // rigify f_index
-                    if (c == finger + n1 || c == finger + n2) return j;
+                    if (c == key) return j;
                 }
             return -1;
         }
