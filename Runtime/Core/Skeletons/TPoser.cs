@@ -148,15 +148,16 @@ namespace AvatarGo.Core
         }
 
         /// <summary>
-        /// The joint that marks where a hand points, for hands without finger bases (<see cref="HandModel.CanModel"/>): the
-        /// hand's child farthest from it (an End Site at the knuckles or fingertips), else -1 (the forearm's direction is used).
+        /// The joint that marks where a hand points: the middle finger's base, else, for hands without finger bones, the hand's
+        /// child whose chain reaches farthest (an End Site at the knuckles or fingertips; the Kinects' hand centre, followed
+        /// by the hand tip, rather than the thumb beside it), else -1 (the forearm's direction is used).
         /// </summary>
         public static int HandLandmark(HumanoidMap map, BodySide side)
         {
             if (map == null) throw new ArgumentNullException(nameof(map));
             HumanoidBone middle = HumanoidBones.Finger(side, Finger.Middle, Phalanx.Proximal);
             if (map.Has(middle)) return map[middle];
-            return FarthestChild(map.Skeleton, map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]);
+            return ChildReachingFarthest(map.Skeleton, map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]);
         }
 
         // ---- What each joint is turned to ------------------------------------------------------------------------------
@@ -353,6 +354,26 @@ namespace AvatarGo.Core
                 if (s.GetParent(c) != joint) continue;
                 float length = s.GetRestLocal(c).Position.Length();
                 if (length > bestLength) { best = c; bestLength = length; }
+            }
+            return best;
+        }
+
+        // The child of `joint` with the longest chain of rest offsets below it (its own offset included), or -1. Joints come
+        // after their parents, so one pass sums each chain.
+        private static int ChildReachingFarthest(Skeleton s, int joint)
+        {
+            int best = -1;
+            float bestReach = 1e-6f;
+            var reach = new float[s.JointCount];
+            var childOf = new int[s.JointCount];
+            for (int j = joint + 1; j < s.JointCount; j++)
+            {
+                int parent = s.GetParent(j);
+                if (parent == joint) childOf[j] = j;
+                else if (parent > joint && childOf[parent] > 0) childOf[j] = childOf[parent];
+                else continue;
+                reach[j] = (parent == joint ? 0f : reach[parent]) + s.GetRestLocal(j).Position.Length();
+                if (reach[j] > bestReach) { best = childOf[j]; bestReach = reach[j]; }
             }
             return best;
         }

@@ -82,5 +82,20 @@ namespace AvatarGo.Core.Tests
                 Assert.That(Vectors.AngleDegrees(wrist.TransformDirection(hand.AlongInHand), outward), Is.LessThan(0.01f), $"{side} hand out");
             }
         }
-    }
+
+        [Test]
+        public void AHandWithoutFingerBonesPointsAlongItsLongestChainNotItsThumb()
+        {
+            // The Kinects' hand: the wrist carries the hand centre (8 cm on, the hand tip 7 cm further) and the thumb (10 cm,
+            // 40° aside). The farthest child alone is the thumb, 40° off the hand's direction.
+            var aside = Vector3.Transform(Vector3.UnitX, Rotations.AngleAxis(40f, Vector3.UnitY)) * 0.10f;
+            var skeleton = new Skeleton(
+                new[] { "WRIST_LEFT", "HAND_LEFT", "HANDTIP_LEFT", "THUMB_LEFT" },
+                new[] { -1, 0, 1, 0 },
+                new[] { RigidPose.Identity, new RigidPose(new Vector3(0.08f, 0f, 0f), Quaternion.Identity), new RigidPose(new Vector3(0.07f, 0f, 0f), Quaternion.Identity), new RigidPose(aside, Quaternion.Identity) },
+                new[] { false, false, true, true });
+            var map = new HumanoidMap(skeleton, new[] { new KeyValuePair<HumanoidBone, string>(HumanoidBone.LeftHand, "WRIST_LEFT") });
+            Assert.That(skeleton.GetName(TPoser.HandLandmark(map, BodySide.Left)), Is.EqualTo("HAND_LEFT"));
+        }
+}
 }
