@@ -91,6 +91,33 @@ namespace AvatarGo.Core.Tests
             return Rebuild(clip, joints);
         }
 
+        /// <summary>
+        /// <paramref name="clip"/> with a joint inserted above each named child: <c>name</c> hangs from the child's parent,
+        /// with the parent's rotation, <c>along</c> of the way from the parent to the child (0: at the parent, as the CMU
+        /// database's BVH conversion puts its LHipJoint and LowerBack), and the child hangs from it, keeping its world pose.
+        /// </summary>
+        public static BvhClip WithJointsAbove(BvhClip clip, params (string child, string name, float along)[] inserted)
+        {
+            Skeleton s = clip.Skeleton;
+            var joints = new List<NewJoint>();
+            var index = new int[s.JointCount];
+            for (int j = 0; j < s.JointCount; j++)
+            {
+                int parent = s.GetParent(j) < 0 ? -1 : index[s.GetParent(j)];
+                foreach (var (child, name, along) in inserted)
+                {
+                    if (child != s.GetName(j)) continue;
+                    int above = s.GetParent(j), below = j;
+                    if (above < 0) throw new ArgumentException($"{child} is a root.", nameof(inserted));
+                    joints.Add(new NewJoint { Name = name, Parent = parent, Source = above, World = w => new RigidPose(Vector3.Lerp(w[above].Position, w[below].Position, along), w[above].Rotation) });
+                    parent = joints.Count - 1;
+                }
+                index[j] = joints.Count;
+                joints.Add(Same(s, j, parent, s.GetName(j)));
+            }
+            return Rebuild(clip, joints);
+        }
+
         /// <summary><paramref name="clip"/> without the joints <paramref name="dropped"/>: their children hang from the nearest kept ancestor and keep their world poses.</summary>
         public static BvhClip Without(BvhClip clip, params int[] dropped)
         {
