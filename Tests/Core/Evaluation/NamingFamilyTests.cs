@@ -76,7 +76,7 @@ namespace AvatarGo.Core.Tests
             Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(0.01), $"{family}: MPJPE (mm)");
             Assert.That(other.MidJointMm.Median, Is.EqualTo(own.MidJointMm.Median).Within(0.01), $"{family}: elbows and knees median (mm)");
         }
-    
+
         /// <summary>
         /// The CMU database as most people get it, its BVH conversion: <c>Hips</c>, then <c>LHipJoint</c> (at the hips) above
         /// <c>LeftUpLeg</c>, <c>LeftLeg</c>, <c>LeftFoot</c>; <c>LowerBack</c> (at the hips) above <c>Spine</c> and
