@@ -36,6 +36,15 @@ namespace AvatarGo.Core
         private readonly int _leftClavicle, _rightClavicle;
         private readonly Quaternion _leftClavicleReference, _rightClavicleReference;
         private const float MaxClavicleDegrees = 20f;
+
+        // A shrug that reached its goal is held; one whose goal needed more than the shoulder's range says less about the
+        // shoulder the further it is (a longer reach than the avatar's, then a glitch or swapped controllers): held in part,
+        // fading from all of it at MaxClavicleDegrees to none at HoldFadeEndDegrees, so that the held shrug is a continuous
+        // function of the goals (a yes-or-no hold let micrometre differences in a device move later frames).
+        private const float HoldFadeEndDegrees = 30f;
+
+        private static float HoldWeight(float neededDegrees) =>
+            Math.Clamp((HoldFadeEndDegrees - neededDegrees) / (HoldFadeEndDegrees - MaxClavicleDegrees), 0f, 1f);
         private Quaternion _leftShrugHeld = Quaternion.Identity, _rightShrugHeld = Quaternion.Identity; // in each clavicle's parent frame
         private readonly int[] _spinePath;
         private readonly int _neck = -1;              // the neck, when it is the last spine joint and more come before it
@@ -269,8 +278,9 @@ namespace AvatarGo.Core
         // An arm starts from its clavicle's held shrug (the calibration pose's clavicle when none is held); if its hand still
         // cannot reach the goal, the clavicle turns toward it by the least angle that brings the goal within the arm's reach,
         // the whole shrug at most MaxClavicleDegrees from the calibration pose (as a shoulder shrugs), the arm is solved
-        // again, and the shrug is held if it was enough: a goal out of any shoulder's reach (swapped controllers, a glitch)
-        // says nothing about where the wearer's shoulder is. What is still out of reach is reported.
+        // again, and the shrug is held (whole if it was enough, in part a little beyond: HoldWeight): a goal out of any
+        // shoulder's reach (swapped controllers, a glitch) says nothing about where the wearer's shoulder is. What is still
+        // out of reach is reported.
         private static LimbResult SolveArm(SkeletonPose pose, LimbChain arm, int clavicle, Quaternion clavicleReference, ref Quaternion held,
             in LimbTarget target, bool hold)
         {
@@ -287,11 +297,10 @@ namespace AvatarGo.Core
             Quaternion shrug = Quaternion.Normalize(Quaternion.Conjugate(parentRotation) * turn * parentRotation * start); // in the parent's frame
             if (!Rotations.IsFinite(shrug)) return result;
             float angle = Rotations.AngleDegrees(Quaternion.Identity, shrug);
-            bool enough = angle <= MaxClavicleDegrees;
-            if (!enough) shrug = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Identity, shrug, MaxClavicleDegrees / angle));
+            if (angle > MaxClavicleDegrees) shrug = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Identity, shrug, MaxClavicleDegrees / angle));
             pose.Local[clavicle] = pose.Local[clavicle].WithRotation(Quaternion.Normalize(shrug * clavicleReference));
             pose.World[clavicle] = (parent < 0 ? pose.Origin : pose.World[parent]) * pose.Local[clavicle];
-            if (hold && enough) held = shrug;
+            if (hold) held = Quaternion.Normalize(Quaternion.Slerp(held, shrug, HoldWeight(angle)));
             return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
         }
 

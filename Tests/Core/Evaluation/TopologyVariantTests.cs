@@ -44,10 +44,11 @@ namespace AvatarGo.Core.Tests
     /// of an elbow differ). Tested: MPJPE within 0.5 mm, each joint's median within 1 mm of its mirror bone's: four times
     /// the largest rounding effect, and below what an unmirrored noise draw does. The original's sides differ by more than
     /// that (MocapBank's upper arms by 10 mm), which the test checks, so the side swap is what it sees.</para>
-    /// <para><b>The held shrug.</b> <see cref="FullBodyIk"/> holds a clavicle's shrug for seconds only when it was enough
-    /// to reach the hand, a yes-or-no decision, so a difference of a micrometre in a device can change the shoulder for the
-    /// seconds after. MocapBank, seed 3: with twist joints the devices agree to 0.001 mm, yet the elbows' and knees' median
-    /// moves by 0.25 mm; under a floor root the simulator's blend from the T-pose into the clip (which interpolates local
+    /// <para><b>The held shrug.</b> <see cref="FullBodyIk"/> holds a clavicle's shrug for seconds, so a difference of a
+    /// micrometre in a device (the spine's solve moves the chest by a fraction of a millimetre for it) can change the
+    /// shoulder for the seconds after, and a shoulder moves a nearly straight elbow many times as far. MocapBank, seed 3:
+    /// with twist joints the devices agree to 0.001 mm, yet the elbows' and knees' median moved by 0.25 mm (when the hold was
+    /// yes or no); under a floor root the simulator's blend from the T-pose into the clip (which interpolates local
     /// poses, so its path depends on the hierarchy) moves the devices by up to 10 mm in those 89 frames, and the median
     /// moves by 1.3 mm. With no shrug held (<see cref="PipelineSettings.ShrugReleaseSeconds"/> 0) both agree within
     /// 0.005 mm. So seeds 1-3 are compared without held shrugs (seed 1 with them too): that isolates the skeleton's construction, the

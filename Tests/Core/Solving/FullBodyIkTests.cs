@@ -343,6 +343,35 @@ namespace AvatarGo.Core.Tests
         }
 
         /// <summary>
+        /// What is held is a continuous function of the goal: a hand just within the shrug's 20° is held whole, one a little
+        /// beyond in part, one far beyond (10° past the range) not at all, with no jump in between (before: held whole up to
+        /// 20° and not at all past it, so a goal micrometres either side of that line held 20° or nothing for seconds). The hand
+        /// hangs below the shoulder 0 to 12 cm beyond its arm, one step a millimetre; the held shrug is read on a frame whose
+        /// hand is within reach.
+        /// </summary>
+        [Test]
+        public void TheHeldShrugFadesOutBeyondTheShouldersRangeWithoutAJump()
+        {
+            float previous = 0f, largestStep = 0f, largest = 0f, last = 0f;
+            for (int mm = 0; mm <= 120; mm++)
+            {
+                var (ik, pose, targets, truth) = HangingArm(mm * 0.001f);
+                ik.Solve(in targets, pose, 1f / 90);
+                BodyTargets within = targets;
+                within.LeftHand.Goal = new RigidPose(Vector3.Lerp(targets.LeftHand.Goal.Position, pose.World[truth[HumanoidBone.LeftUpperArm]].Position, 0.25f), targets.LeftHand.Goal.Rotation);
+                ik.Solve(in within, pose, 1e-6f);
+                float held = ClavicleTurnDegrees(pose, truth);
+                if (mm > 0) largestStep = Math.Max(largestStep, Math.Abs(held - previous));
+                largest = Math.Max(largest, held);
+                previous = last = held;
+            }
+            TestContext.WriteLine($"largest held {largest:F2} deg, largest change over 1 mm of goal {largestStep:F2} deg, held 12 cm beyond {last:F3} deg");
+            Assert.That(largest, Is.GreaterThan(19.5f), "a shrug of (nearly) the whole range is held");
+            Assert.That(largestStep, Is.LessThan(1.5f), "no jump in what is held");
+            Assert.That(last, Is.LessThan(1e-3f), "a goal far beyond the shoulder's range holds nothing");
+        }
+
+        /// <summary>
         /// The 20° a shoulder shrugs bounds the whole shrug, held part included: a hand reaching 1 mm further down each
         /// frame (90 Hz) to 20 cm beyond its arm never turns the clavicle past 20° from the calibration pose, as a single
         /// frame at 20 cm does not (found in review: the limit once applied to each frame's extra turn, 39.9° here).
