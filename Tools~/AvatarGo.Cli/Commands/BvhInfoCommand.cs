@@ -18,8 +18,9 @@ public sealed class BvhInfoCommand : ICommand
 
         Prints the joints of a BVH file (with their channels), its frame count, frame rate and
         duration, the guessed length unit, the humanoid bone found for each joint, and the required
-        humanoid bones that could not be found (none for a usable rig); for a usable rig also its up
-        axis and how its knees bend (a mirrored clip bends them backward).
+        humanoid bones that could not be found (none for a usable rig); for a usable rig also the
+        optional bones it lacks, whether each hand's fingers were found (else the hand takes the
+        walk-in offset), its up axis and how its knees bend (a mirrored clip bends them backward).
           --map FILE   the humanoid bones of joints the naming rules miss ('joint name = Bone' lines,
                        as for 'avatargo simulate')
         Exit codes: 0 ok, 1 unreadable or malformed file (one-line message), 2 bad arguments.
@@ -55,6 +56,17 @@ public sealed class BvhInfoCommand : ICommand
         stdout.WriteLine($"humanoid: {map.Count} bones mapped; missing required: {(missing.Count == 0 ? "none" : string.Join(", ", missing))}");
         if (missing.Count == 0)
         {
+            var optional = OptionalBodyBones.Where(b => !map.Has(b)).ToList();
+            stdout.WriteLine($"optional bones missing: {(optional.Count == 0 ? "none" : string.Join(", ", optional) + " (what each costs: Documentation~/skeletons.md)")}");
+            foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+            {
+                string hand = side == BodySide.Left ? "left hand" : "right hand";
+                bool anyFinger = Enumerable.Range(0, HumanoidBones.Count).Any(b => HumanoidBones.IsFinger((HumanoidBone)b)
+                    && HumanoidBones.IsLeft((HumanoidBone)b) == (side == BodySide.Left) && map.Has((HumanoidBone)b));
+                stdout.WriteLine(HandModel.CanModel(map, side, out string reason)
+                    ? $"{hand}: fingers found (the controller in the palm, the fingers closed on it)"
+                    : $"{hand}: {(anyFinger ? reason : "no finger bones")}; the hand takes the walk-in offset, without finger IK");
+            }
             Quaternion upright = ClipConventions.UprightTurn(clip, map);
             stdout.WriteLine(upright == Quaternion.Identity ? "up: +Y"
                 : string.Create(inv, $"up: {AxisName(Vector3.Transform(Vector3.UnitY, Quaternion.Conjugate(upright)))} (not +Y: simulate turns the motion {Rotations.AngleDegrees(Quaternion.Identity, upright):0} deg to stand it up)"));
@@ -63,6 +75,13 @@ public sealed class BvhInfoCommand : ICommand
         }
         return 0;
     }
+
+    // The humanoid bones the body solve uses when a rig has them (the fingers are summed up per hand).
+    private static readonly HumanoidBone[] OptionalBodyBones =
+    {
+        HumanoidBone.Chest, HumanoidBone.UpperChest, HumanoidBone.Neck, HumanoidBone.LeftShoulder, HumanoidBone.RightShoulder,
+        HumanoidBone.LeftToes, HumanoidBone.RightToes, HumanoidBone.LeftEye, HumanoidBone.RightEye,
+    };
 
     // "+X" … "-Z": the axis a unit vector lies along (the clip's up is always one of them).
     private static string AxisName(Vector3 v)

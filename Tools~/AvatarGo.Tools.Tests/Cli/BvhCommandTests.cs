@@ -58,6 +58,13 @@ public class BvhCommandTests
         StringAssert.Contains("frames: 455", r.Stdout);
         StringAssert.Contains("LeftElbow  [Zrotation Xrotation Yrotation]  -> LeftLowerArm", r.Stdout);
         StringAssert.Contains("missing required: none", r.Stdout);
+        StringAssert.Contains("optional bones missing: UpperChest, LeftToes, RightToes, LeftEye, RightEye", r.Stdout);
+        StringAssert.Contains("left hand: no finger bones; the hand takes the walk-in offset, without finger IK", r.Stdout);
+
+        var mixamo = CliRunner.Run("bvh", "info", Paths.Mocap("mixamo_fingers_30fps.bvh"));
+        StringAssert.Contains("optional bones missing: none", mixamo.Stdout);
+        StringAssert.Contains("left hand: fingers found", mixamo.Stdout);
+        StringAssert.Contains("right hand: fingers found", mixamo.Stdout);
     }
 
     /// <summary>
