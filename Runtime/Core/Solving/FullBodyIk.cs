@@ -40,7 +40,7 @@ namespace AvatarGo.Core
         // A shrug that reached its goal is held; one whose goal needed more than the shoulder's range says less about the
         // shoulder the further it is (a longer reach than the avatar's, then a glitch or swapped controllers): held in part,
         // fading from all of it at MaxClavicleDegrees to none at HoldFadeEndDegrees, so that the held shrug is a continuous
-        // function of the goals (a yes-or-no hold let micrometre differences in a device move later frames).
+        // function of the goals (held whole or not at all, a goal either side of the 20° line held 20° or nothing for seconds).
         private const float HoldFadeEndDegrees = 30f;
 
         private static float HoldWeight(float neededDegrees) =>
