@@ -72,8 +72,8 @@ public class PlantedDefectTests
     [Test]
     public void EditorApiInARuntimeFileWithoutTheGuardFailsInThePlayerBuild()
     {
-        // The package uses no UnityEditor API yet, so the copy's surface gets one real member for the plant,
-        // declared (with its source) as Unity declares it.
+        // The package's runtime uses no EditorApplication (only Editor/ uses UnityEditor), so the copy's surface gets one
+        // real member for the plant, declared (with its source) as Unity declares it.
         _copy.Write("Tools~/UnitySurface/UnityEditor/EditorApplication.cs",
             "namespace UnityEditor\n{\n    // UnityCsReference@2021.3 Editor/Mono/EditorApplication.bindings.cs\n" +
             "    public sealed class EditorApplication\n    {\n        public static bool isPlaying { get => throw null; set => throw null; }\n    }\n}\n");
@@ -93,13 +93,8 @@ public class PlantedDefectTests
     [Test]
     public void AnimatePhysicsFailsFromUnity2023()
     {
-        // No package code uses the Animator yet (the IK driver will): the copy's surface gets the enum as both versions
-        // declare it, and the plant uses the 2021.3 name that 2023.1 made an error.
-        _copy.Write("Tools~/UnitySurface/UnityEngine/AnimationModule/AnimatorUpdateMode.cs",
-            "namespace UnityEngine\n{\n    // UnityCsReference@2021.3 Modules/Animation/ScriptBindings/Animator.bindings.cs\n" +
-            "    public enum AnimatorUpdateMode\n    {\n        Normal = 0,\n#if UNITY_2023_1_OR_NEWER\n        Fixed = 1,\n#endif\n        UnscaledTime = 2,\n" +
-            "#if UNITY_2023_1_OR_NEWER\n        // UnityCsReference@2023.1 Modules/Animation/ScriptBindings/Animator.bindings.cs\n" +
-            "        [System.Obsolete(\"AnimatePhysics is now Fixed (UnityUpgradable) -> Fixed\", true)]\n#endif\n        AnimatePhysics = 1,\n    }\n}\n");
+        // The plant uses the 2021.3 name that 2023.1 made an error, against the surface's AnimatorUpdateMode (declared as
+        // both versions declare it: Tools~/UnitySurface/UnityEngine/AnimationModule/AnimatorUpdateMode.cs).
         _copy.Write("Runtime/Bridge/PlantedUpdateMode.cs",
             "namespace AvatarGo\n{\n    internal static class PlantedUpdateMode\n    {\n" +
             "        internal static UnityEngine.AnimatorUpdateMode Physics => UnityEngine.AnimatorUpdateMode.AnimatePhysics;\n    }\n}\n");
