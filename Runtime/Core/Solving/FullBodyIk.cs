@@ -82,7 +82,11 @@ namespace AvatarGo.Core
             _spineReference = new Quaternion[_spine.Length];
             for (int i = 0; i < _spine.Length; i++)
                 _spineReference[i] = reference != null ? reference.Local[_spine[i]].Rotation : s.GetRestLocal(_spine[i]).Rotation;
-            if (_spine.Length >= 2 && _spine[_spine.Length - 1] == map[HumanoidBone.Neck])
+            // A neck that carries the arms (3ds Max Biped hangs the clavicles from its Neck bone) is the chest's top, not
+            // the cervical spine: turning it with the head would swing the shoulders with every nod.
+            bool neckCarriesArms = map.Has(HumanoidBone.Neck)
+                && (s.IsAncestorOrSelf(map[HumanoidBone.Neck], map[HumanoidBone.LeftUpperArm]) || s.IsAncestorOrSelf(map[HumanoidBone.Neck], map[HumanoidBone.RightUpperArm]));
+            if (_spine.Length >= 2 && _spine[_spine.Length - 1] == map[HumanoidBone.Neck] && !neckCarriesArms)
             {
                 var refLocal = new RigidPose[s.JointCount];
                 if (reference != null) Array.Copy(reference.Local, refLocal, refLocal.Length); else s.GetRestLocal(refLocal);

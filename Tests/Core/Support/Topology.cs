@@ -118,6 +118,34 @@ namespace AvatarGo.Core.Tests
             return Rebuild(clip, joints);
         }
 
+        /// <summary>
+        /// <paramref name="clip"/> with each named joint hanging from another parent (3ds Max Biped's clavicles under the
+        /// neck), every joint keeping its world pose in every frame; the joints are reordered so that parents come first.
+        /// </summary>
+        public static BvhClip Reparented(BvhClip clip, params (string joint, string parent)[] moves)
+        {
+            Skeleton s = clip.Skeleton;
+            int ParentOf(int j)
+            {
+                foreach (var (joint, parent) in moves)
+                    if (joint == s.GetName(j)) return s.IndexOf(parent) >= 0 ? s.IndexOf(parent) : throw new ArgumentException($"No joint {parent}.", nameof(moves));
+                return s.GetParent(j);
+            }
+            var order = new List<int>();
+            void Visit(int j)
+            {
+                if (order.Contains(j)) throw new ArgumentException("The moves make a cycle.", nameof(moves));
+                order.Add(j);
+                for (int c = 0; c < s.JointCount; c++) if (ParentOf(c) == j) Visit(c);
+            }
+            for (int j = 0; j < s.JointCount; j++) if (ParentOf(j) < 0) Visit(j);
+            var index = new int[s.JointCount];
+            for (int i = 0; i < order.Count; i++) index[order[i]] = i;
+            var joints = new List<NewJoint>();
+            foreach (int j in order) joints.Add(Same(s, j, ParentOf(j) < 0 ? -1 : index[ParentOf(j)], s.GetName(j)));
+            return Rebuild(clip, joints);
+        }
+
         /// <summary><paramref name="clip"/> without the joints <paramref name="dropped"/>: their children hang from the nearest kept ancestor and keep their world poses.</summary>
         public static BvhClip Without(BvhClip clip, params int[] dropped)
         {
