@@ -20,7 +20,9 @@ namespace AvatarGo.Core
     /// back forward.
     /// When the spine ends in a neck below other spine joints, the neck is then moved part of the way
     /// (<see cref="NeckFollowsHead"/>) to where it would be if it had turned with the head, the joints below it are bent
-    /// again the same way to reach it, and the neck aims the head at its target.
+    /// again the same way to reach it, and the neck aims the head at its target. A neck that carries the arms (3ds Max
+    /// Biped hangs its clavicles from its Neck bone) is the chest's top: it bends with the other spine joints and does
+    /// not follow the head, which would swing the shoulders with every nod.
     /// </remarks>
     public sealed class FullBodyIk
     {
