@@ -20,9 +20,9 @@ namespace AvatarGo.Core
     /// back forward.
     /// When the spine ends in a neck below other spine joints, the neck is then moved part of the way
     /// (<see cref="NeckFollowsHead"/>) to where it would be if it had turned with the head, the joints below it are bent
-    /// again the same way to reach it, and the neck aims the head at its target. A neck that carries the arms (3ds Max
-    /// Biped hangs its clavicles from its Neck bone) is the chest's top: it bends with the other spine joints and does
-    /// not follow the head, which would swing the shoulders with every nod.
+    /// again the same way to reach it, and the neck aims the head at its target. Clavicles that hang from that neck (3ds
+    /// Max Biped hangs them from its Neck bone) are turned in the frame of the joint below it, as clavicles that hang from
+    /// the chest are, so the neck's following the head does not swing the shoulders.
     /// </remarks>
     public sealed class FullBodyIk
     {
@@ -36,7 +36,8 @@ namespace AvatarGo.Core
         private readonly LimbChain _leftLeg, _rightLeg, _leftArm, _rightArm;
         private readonly Quaternion[] _spineReference;
         private readonly int _leftClavicle, _rightClavicle;
-        private readonly Quaternion _leftClavicleReference, _rightClavicleReference;
+        private readonly Quaternion _leftClavicleReference, _rightClavicleReference; // in each clavicle's frame joint's frame
+        private readonly int _leftClavicleFrame, _rightClavicleFrame;
         private const float MaxClavicleDegrees = 20f;
 
         // A shrug that reached its goal is held; one whose goal needed more than the shoulder's range says less about the
@@ -84,16 +85,12 @@ namespace AvatarGo.Core
             _spineReference = new Quaternion[_spine.Length];
             for (int i = 0; i < _spine.Length; i++)
                 _spineReference[i] = reference != null ? reference.Local[_spine[i]].Rotation : s.GetRestLocal(_spine[i]).Rotation;
-            // A neck that carries the arms (3ds Max Biped hangs the clavicles from its Neck bone) is the chest's top, not
-            // the cervical spine: turning it with the head would swing the shoulders with every nod.
-            bool neckCarriesArms = map.Has(HumanoidBone.Neck)
-                && (s.IsAncestorOrSelf(map[HumanoidBone.Neck], map[HumanoidBone.LeftUpperArm]) || s.IsAncestorOrSelf(map[HumanoidBone.Neck], map[HumanoidBone.RightUpperArm]));
-            if (_spine.Length >= 2 && _spine[_spine.Length - 1] == map[HumanoidBone.Neck] && !neckCarriesArms)
+            var refLocal = new RigidPose[s.JointCount];
+            if (reference != null) Array.Copy(reference.Local, refLocal, refLocal.Length); else s.GetRestLocal(refLocal);
+            var refWorld = new RigidPose[s.JointCount];
+            s.ComputeWorld(refLocal, refWorld);
+            if (_spine.Length >= 2 && _spine[_spine.Length - 1] == map[HumanoidBone.Neck])
             {
-                var refLocal = new RigidPose[s.JointCount];
-                if (reference != null) Array.Copy(reference.Local, refLocal, refLocal.Length); else s.GetRestLocal(refLocal);
-                var refWorld = new RigidPose[s.JointCount];
-                s.ComputeWorld(refLocal, refWorld);
                 _neck = _spine[_spine.Length - 1];
                 _neckInHead = refWorld[_head].InverseTransformPoint(refWorld[_neck].Position);
             }
@@ -101,8 +98,10 @@ namespace AvatarGo.Core
             _rightLeg = new LimbChain(s, map[HumanoidBone.RightUpperLeg], map[HumanoidBone.RightLowerLeg], map[HumanoidBone.RightFoot]);
             _leftClavicle = map[HumanoidBone.LeftShoulder];
             _rightClavicle = map[HumanoidBone.RightShoulder];
-            _leftClavicleReference = _leftClavicle < 0 ? Quaternion.Identity : reference != null ? reference.Local[_leftClavicle].Rotation : s.GetRestLocal(_leftClavicle).Rotation;
-            _rightClavicleReference = _rightClavicle < 0 ? Quaternion.Identity : reference != null ? reference.Local[_rightClavicle].Rotation : s.GetRestLocal(_rightClavicle).Rotation;
+            _leftClavicleFrame = ClavicleFrame(s, _leftClavicle);
+            _rightClavicleFrame = ClavicleFrame(s, _rightClavicle);
+            _leftClavicleReference = ClavicleReference(s, _leftClavicle, _leftClavicleFrame, refLocal, refWorld);
+            _rightClavicleReference = ClavicleReference(s, _rightClavicle, _rightClavicleFrame, refLocal, refWorld);
             _leftArm = new LimbChain(s, map[HumanoidBone.LeftUpperArm], map[HumanoidBone.LeftLowerArm], map[HumanoidBone.LeftHand]);
             _rightArm = new LimbChain(s, map[HumanoidBone.RightUpperArm], map[HumanoidBone.RightLowerArm], map[HumanoidBone.RightHand]);
         }
@@ -192,8 +191,8 @@ namespace AvatarGo.Core
                 _leftShrugHeld = Quaternion.Normalize(Quaternion.Slerp(_leftShrugHeld, Quaternion.Identity, release));
                 _rightShrugHeld = Quaternion.Normalize(Quaternion.Slerp(_rightShrugHeld, Quaternion.Identity, release));
             }
-            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftClavicle, _leftClavicleReference, ref _leftShrugHeld, in targets.LeftHand, holdShrugs);
-            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightClavicle, _rightClavicleReference, ref _rightShrugHeld, in targets.RightHand, holdShrugs);
+            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftClavicle, _leftClavicleFrame, _leftClavicleReference, ref _leftShrugHeld, in targets.LeftHand, holdShrugs);
+            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightClavicle, _rightClavicleFrame, _rightClavicleReference, ref _rightShrugHeld, in targets.RightHand, holdShrugs);
             pose.UpdateWorld();
             return report;
         }
@@ -287,27 +286,54 @@ namespace AvatarGo.Core
         // again, and the shrug is held (whole if it was enough, in part a little beyond: HoldWeight): a goal out of any
         // shoulder's reach (swapped controllers, a glitch) says nothing about where the wearer's shoulder is. What is still
         // out of reach is reported.
-        private static LimbResult SolveArm(SkeletonPose pose, LimbChain arm, int clavicle, Quaternion clavicleReference, ref Quaternion held,
+        private static LimbResult SolveArm(SkeletonPose pose, LimbChain arm, int clavicle, int frame, Quaternion clavicleReference, ref Quaternion held,
             in LimbTarget target, bool hold)
         {
             if (clavicle < 0) return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
             int parent = pose.Skeleton.GetParent(clavicle);
+            Quaternion frameRotation = frame < 0 ? pose.Origin.Rotation : pose.World[frame].Rotation;
             Quaternion start = hold ? held : Quaternion.Identity;
-            pose.Local[clavicle] = pose.Local[clavicle].WithRotation(Quaternion.Normalize(start * clavicleReference));
-            pose.World[clavicle] = (parent < 0 ? pose.Origin : pose.World[parent]) * pose.Local[clavicle];
+            SetClavicle(pose, clavicle, parent, frame, frameRotation, Quaternion.Normalize(start * clavicleReference));
             LimbResult result = TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
             if (result.Reached || !(result.DistanceLeft > 1e-4f)) return result;
 
             Quaternion turn = ShrugToward(pose.World[clavicle].Position, pose.World[arm.Root].Position, pose.World[arm.End].Position, target.Goal.Position);
-            Quaternion parentRotation = parent < 0 ? pose.Origin.Rotation : pose.World[parent].Rotation;
-            Quaternion shrug = Quaternion.Normalize(Quaternion.Conjugate(parentRotation) * turn * parentRotation * start); // in the parent's frame
+            Quaternion shrug = Quaternion.Normalize(Quaternion.Conjugate(frameRotation) * turn * frameRotation * start); // in the frame joint's frame
             if (!Rotations.IsFinite(shrug)) return result;
             float angle = Rotations.AngleDegrees(Quaternion.Identity, shrug);
             if (angle > MaxClavicleDegrees) shrug = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Identity, shrug, MaxClavicleDegrees / angle));
-            pose.Local[clavicle] = pose.Local[clavicle].WithRotation(Quaternion.Normalize(shrug * clavicleReference));
-            pose.World[clavicle] = (parent < 0 ? pose.Origin : pose.World[parent]) * pose.Local[clavicle];
+            SetClavicle(pose, clavicle, parent, frame, frameRotation, Quaternion.Normalize(shrug * clavicleReference));
             if (hold) held = Quaternion.Normalize(Quaternion.Slerp(held, shrug, HoldWeight(angle)));
             return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
+        }
+
+        // Turns the clavicle to `rotation` in its frame joint's frame (its parent's, or the chest's when it hangs from a neck
+        // that follows the head) and updates its world pose.
+        private static void SetClavicle(SkeletonPose pose, int clavicle, int parent, int frame, Quaternion frameRotation, Quaternion rotation)
+        {
+            RigidPose parentWorld = parent < 0 ? pose.Origin : pose.World[parent];
+            Quaternion local = frame == parent ? rotation : Quaternion.Normalize(Quaternion.Conjugate(parentWorld.Rotation) * frameRotation * rotation);
+            pose.Local[clavicle] = pose.Local[clavicle].WithRotation(local);
+            pose.World[clavicle] = parentWorld * pose.Local[clavicle];
+        }
+
+        // The joint whose frame a clavicle's rotation and shrug are kept in: its parent, or, when it hangs from the neck that
+        // follows the head (3ds Max Biped hangs its clavicles from its Neck bone), the joint below that neck, so that a
+        // nod does not swing the shoulders.
+        private int ClavicleFrame(Skeleton s, int clavicle)
+        {
+            if (clavicle < 0) return -1;
+            int parent = s.GetParent(clavicle);
+            return _neck >= 0 && parent == _neck ? s.GetParent(_neck) : parent;
+        }
+
+        // The clavicle's calibration rotation in its frame joint's frame (its local rotation when that is its parent).
+        private static Quaternion ClavicleReference(Skeleton s, int clavicle, int frame, RigidPose[] refLocal, RigidPose[] refWorld)
+        {
+            if (clavicle < 0) return Quaternion.Identity;
+            if (frame == s.GetParent(clavicle)) return refLocal[clavicle].Rotation;
+            Quaternion frameRotation = frame < 0 ? Quaternion.Identity : refWorld[frame].Rotation;
+            return Quaternion.Normalize(Quaternion.Conjugate(frameRotation) * refWorld[clavicle].Rotation);
         }
 
         // The least turn of the clavicle about its pivot that brings the goal within reach of the stretched arm: the shoulder

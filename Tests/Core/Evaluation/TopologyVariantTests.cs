@@ -264,7 +264,7 @@ namespace AvatarGo.Core.Tests
 
         // --- Clavicles under the neck (3ds Max Biped) -------------------------------------------------------------------
 
-        private static void AssertClaviclesUnderTheNeckChangeLittle(string path, int seed)
+        private static void AssertClaviclesUnderTheNeckChangeLittle(string path, int seed, double mpjpeMm = 1.2, double midMm = 1.5)
         {
             BvhClip clip = Read(path);
             HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
@@ -278,20 +278,22 @@ namespace AvatarGo.Core.Tests
             string what = $"{Path.GetFileName(path)} with its clavicles under the neck, seed {seed}";
             TestContext.WriteLine($"{what}: {Figures(other)} (original {Figures(own)})");
             Assert.That(other.Profile, Is.Not.Null, $"{what}: calibration failed: {other.CalibrationMessage}");
-            Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(0.5), $"{what}: MPJPE (mm)");
+            Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(mpjpeMm), $"{what}: MPJPE (mm)");
             Assert.That(other.EndEffectorMm.Median, Is.EqualTo(own.EndEffectorMm.Median).Within(0.05), $"{what}: end-effector median (mm)");
-            Assert.That(other.MidJointMm.Median, Is.EqualTo(own.MidJointMm.Median).Within(1.5), $"{what}: elbows' and knees' median (mm)");
+            Assert.That(other.MidJointMm.Median, Is.EqualTo(own.MidJointMm.Median).Within(midMm), $"{what}: elbows' and knees' median (mm)");
         }
 
         /// <summary>
         /// 3ds Max Biped hangs its clavicles from its Neck bone. The same motion with the clavicles moved under the neck, every
-        /// joint's world pose kept, gives nearly the original's avatar: a neck that carries the arms bends with the chest
-        /// rather than following the head (<see cref="FullBodyIk.NeckFollowsHead"/>), which swung the shoulders with every
-        /// nod. Before, MocapBank seed 1 gave MPJPE 18.33 mm against the original's 17.57 and elbows and knees median 48.3
-        /// against 42.9; now 17.74 and 43.8 (the back bends over one more joint, so near the original, not equal).
+        /// joint's world pose kept, gives nearly the original's avatar: the neck follows the head as on any rig
+        /// (<see cref="FullBodyIk.NeckFollowsHead"/>) and the clavicles are held in the frame of the joint below it, as they
+        /// are on a rig whose clavicles hang from the chest, so a nod no longer swings the shoulders (their roots still ride
+        /// on the neck). MocapBank seed 1: MPJPE 17.56 mm against the original's 17.57 and elbows and knees median 43.1
+        /// against 42.9; before, 18.33 and 48.3. In the slow suite every shared clip, within 1.2 mm (Mixamo: 10.86 against
+        /// 9.88, before 11.01; Rigify 15.29 against 15.27, before 16.21).
         /// </summary>
         [Test]
-        public void ClaviclesUnderTheNeckGiveNearlyTheSameAvatar() => AssertClaviclesUnderTheNeckChangeLittle(TestData.Mocap("mocapbank_30fps.bvh"), 1);
+        public void ClaviclesUnderTheNeckGiveNearlyTheSameAvatar() => AssertClaviclesUnderTheNeckChangeLittle(TestData.Mocap("mocapbank_30fps.bvh"), 1, 0.25, 0.5);
 
         [TestCase("clavicles"), TestCase("neck"), TestCase("upper spine")]
         public void DroppedOptionalBonesStillCalibrateAndFollow(string which) => AssertDroppedBonesStillWork(TestData.Mocap("mocapbank_30fps.bvh"), which, 1);

@@ -21,9 +21,11 @@ namespace AvatarGo.Core.Tests
             public Vector3 RestRootToHead;
             public Quaternion RestHipsRotation;
 
-            public Truth(string clipName)
+            public Truth(string clipName) : this(BvhReader.ReadFile(TestData.Mocap(clipName), new BvhReadOptions { ToMetres = true })) { }
+
+            public Truth(BvhClip clip)
             {
-                Clip = BvhReader.ReadFile(TestData.Mocap(clipName), new BvhReadOptions { ToMetres = true });
+                Clip = clip;
                 Map = HumanoidNaming.Detect(Clip.Skeleton);
                 Local = new RigidPose[Clip.Skeleton.JointCount];
                 World = new RigidPose[Clip.Skeleton.JointCount];
@@ -369,6 +371,46 @@ namespace AvatarGo.Core.Tests
             Assert.That(largest, Is.GreaterThan(19.5f), "a shrug of (nearly) the whole range is held");
             Assert.That(largestStep, Is.LessThan(1.5f), "no jump in what is held");
             Assert.That(last, Is.LessThan(1e-3f), "a goal far beyond the shoulder's range holds nothing");
+        }
+
+        /// <summary>
+        /// A nod swings the shoulders no more when they hang from the neck: on MocapBank with its clavicles moved under its neck
+        /// (as 3ds Max Biped hangs them), the head target turned 30° forward about its own position turns the neck as on the
+        /// original (<see cref="FullBodyIk.NeckFollowsHead"/>; the spine below bends again to carry it) and each clavicle as
+        /// on the original, with the chest, within 0.01° (before, it turned with the neck as well), its shoulder within what
+        /// its root rides on the neck.
+        /// </summary>
+        [Test]
+        public void ANodDoesNotSwingShouldersThatHangFromTheNeck()
+        {
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            var (ownClavicle, ownNeck, ownShoulder) = Nod(new Truth(clip));
+            var (clavicle, neck, shoulder) = Nod(new Truth(Topology.Reparented(clip, ("LeftCollar", "Neck"), ("RightCollar", "Neck"))));
+            TestContext.WriteLine($"nod 30 deg, clavicles on the chest: neck turned {ownNeck:F2} deg, clavicle {ownClavicle:F3} deg, shoulder moved {ownShoulder:F1} mm; " +
+                $"under the neck: {neck:F2} deg, {clavicle:F3} deg, {shoulder:F1} mm");
+            Assert.That(neck, Is.EqualTo(ownNeck).Within(0.01f).And.GreaterThan(3f), "the neck follows the head as it does on the original");
+            Assert.That(clavicle, Is.EqualTo(ownClavicle).Within(0.01f), "the clavicle turns as on the original (with the chest), not with the neck");
+            Assert.That(shoulder, Is.EqualTo(ownShoulder).Within(15f), "the shoulder moves only as far as its root rides on the neck");
+        }
+
+        // The turn of the neck and the left clavicle (°) and how far the left shoulder moves (mm) when the head target of
+        // MocapBank's first frame turns 30° forward about its own position.
+        private static (float clavicle, float neck, float shoulder) Nod(Truth truth)
+        {
+            var ik = new FullBodyIk(truth.Map);
+            var pose = new SkeletonPose(truth.Clip.Skeleton);
+            var targets = new BodyTargets();
+            truth.Targets(0, ref targets);
+            ik.Solve(in targets, pose);
+            Quaternion clavicle = pose.World[truth[HumanoidBone.LeftShoulder]].Rotation, neck = pose.World[truth[HumanoidBone.Neck]].Rotation;
+            Vector3 shoulder = pose.World[truth[HumanoidBone.LeftUpperArm]].Position;
+            BodyTargets nod = targets;
+            Vector3 hipLine = pose.World[truth[HumanoidBone.RightUpperLeg]].Position - pose.World[truth[HumanoidBone.LeftUpperLeg]].Position;
+            nod.Head = new RigidPose(targets.Head.Position, Rotations.AngleAxis(30f, hipLine) * targets.Head.Rotation);
+            ik.Solve(in nod, pose);
+            return (Rotations.AngleDegrees(clavicle, pose.World[truth[HumanoidBone.LeftShoulder]].Rotation),
+                Rotations.AngleDegrees(neck, pose.World[truth[HumanoidBone.Neck]].Rotation),
+                Vector3.Distance(shoulder, pose.World[truth[HumanoidBone.LeftUpperArm]].Position) * 1000f);
         }
 
         /// <summary>
