@@ -25,8 +25,8 @@ namespace AvatarGo.Core
     /// <c>ShoulderLeft</c> = upper arm, <c>ElbowLeft</c>, <c>HipLeft</c>, <c>AnkleLeft</c> above <c>FootLeft</c>) and Azure
     /// Kinect (<c>PELVIS</c>, <c>CLAVICLE_LEFT</c>, <c>SHOULDER_LEFT</c>, <c>WRIST_LEFT</c> above <c>HAND_LEFT</c>). Fingers
     /// numbered by finger (<c>LeftHandIndex1</c>, <c>lMid1</c>), named by phalanx (<c>LeftIndexProximal</c>, VRM 1.0's
-    /// <c>leftThumbMetacarpal</c>), 3ds Max Biped's <c>Finger0</c> to <c>Finger42</c> and MakeHuman's <c>finger1-1</c> to
-    /// <c>finger5-3</c>. Explicit overrides win.
+    /// <c>leftThumbMetacarpal</c>), 3ds Max Biped's <c>Finger0</c> to <c>Finger42</c>, MakeHuman's <c>finger1-1</c> to
+    /// <c>finger5-3</c> and Xsens MVN's gloves (<c>LeftFirstMC</c> to <c>LeftFifthDP</c>). Explicit overrides win.
     /// </summary>
     /// <remarks>
     /// Rules worth knowing: <c>Shoulder</c> is the clavicle when the same side also has an <c>Arm</c>/<c>UpperArm</c>
@@ -298,11 +298,18 @@ namespace AvatarGo.Core
         // Finger0 (thumb) to Finger4, their phalanges Finger0, Finger01, Finger02; MakeHuman's finger1-1 (thumb) to finger5-3.
         private enum FingerNumbering { ByFinger, Biped, MakeHuman }
 
-        // The finger words, thumb to little finger (Daz and Character Creator call the middle finger "Mid").
+        // The finger words, thumb to little finger (Daz and Character Creator call the middle finger "Mid"; Xsens MVN's
+        // gloves count them, LeftFirstMC to LeftFifthDP).
         private static readonly string[][] FingerWords =
         {
-            new[] { "thumb" }, new[] { "index" }, new[] { "middle", "mid" }, new[] { "ring" }, new[] { "pinky", "little" },
+            new[] { "thumb", "first" }, new[] { "index", "second" }, new[] { "middle", "mid", "third" }, new[] { "ring", "fourth" },
+            new[] { "pinky", "little", "fifth" },
         };
+
+        // Xsens MVN's segments: the thumb's metacarpal, proximal and distal phalanges (MC, PP, DP), the other fingers'
+        // proximal, middle and distal ones (PP, MP, DP; their metacarpals are not humanoid bones).
+        private static readonly string[] XsensThumb = { "mc", "pp", "dp" };
+        private static readonly string[] XsensFinger = { "pp", "mp", "dp" };
 
         // Phalanges by name, proximal first. A thumb with a metacarpal (VRM 1.0, OpenXR, Meta) has a proximal and a distal
         // after it, and its metacarpal is the humanoid thumb's first bone, as Unity maps it; the other fingers' metacarpals
@@ -334,7 +341,8 @@ namespace AvatarGo.Core
             foreach (string word in FingerWords[finger])
             {
                 string[] named = finger == 0 && FindUnderHand(s, cores, sides, side, hand, hand, word + "metacarpal") >= 0 ? ThumbWithMetacarpal : PhalanxWords;
-                int joint = FindUnderHand(s, cores, sides, side, hand, under, word + number, word + "0" + number, word + named[phalanx]);
+                int joint = FindUnderHand(s, cores, sides, side, hand, under, word + number, word + "0" + number, word + named[phalanx],
+                    word + (finger == 0 ? XsensThumb : XsensFinger)[phalanx]);
                 if (joint >= 0) return joint;
             }
             return -1;
@@ -350,8 +358,9 @@ namespace AvatarGo.Core
                     if (sides[j] != side || s.IsEndSite(j) || j == under || !s.IsAncestorOrSelf(under, j) || !s.IsAncestorOrSelf(hand, j)) continue;
                     string c = cores[j];
                     if (c.StartsWith("hand", StringComparison.Ordinal)) c = c.Substring(4);
-                    if (c.StartsWith("f", StringComparison.Ordinal) && !c.StartsWith("finger", StringComparison.Ordinal)) c = c.Substring(1); // rigify f_index
                     if (c == key) return j;
+                    // Rigify's f_index.01.L: the f is not part of the finger's name (Xsens's FirstMC and FifthDP are).
+                    if (c.Length == key.Length + 1 && c[0] == 'f' && string.CompareOrdinal(c, 1, key, 0, key.Length) == 0) return j;
                 }
             return -1;
         }

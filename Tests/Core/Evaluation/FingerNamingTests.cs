@@ -12,7 +12,7 @@ namespace AvatarGo.Core.Tests
     /// fingers renamed as 3ds Max Biped (<c>Bip01_L_Finger0</c> the thumb, <c>Finger01</c> its second phalanx), MakeHuman
     /// (<c>finger1-1.L</c> the thumb, <c>finger2-1.L</c> the index), Daz Genesis and Character Creator (<c>lMid1</c>,
     /// <c>CC_Base_L_Mid1</c>), Unity's humanoid bone names (<c>LeftThumbProximal</c>), VRM 1.0 (<c>leftThumbMetacarpal</c>,
-    /// <c>leftLittleDistal</c>) and Unreal (<c>index_01_l</c>). Every finger bone is found, so the controller sits in the palm
+    /// <c>leftLittleDistal</c>), Xsens MVN's gloves (<c>LeftFirstMC</c>, <c>LeftSecondPP</c>) and Unreal (<c>index_01_l</c>). Every finger bone is found, so the controller sits in the palm
     /// and the fingers close as on the original; a finger the names miss would leave the hand on the walk-in offset.
     /// </summary>
     public class FingerNamingTests
@@ -49,6 +49,10 @@ namespace AvatarGo.Core.Tests
                 ? $"{side.ToLowerInvariant()}{(f == 4 ? "Little" : FingerWords[f])}{(f == 0 ? new[] { "Metacarpal", "Proximal", "Distal" } : new[] { "Proximal", "Intermediate", "Distal" })[p - 1]}"
                 : Body(side, part, "hips", "spine", "chest", "upperChest", "neck", "head",
                     s => s.ToLowerInvariant(), "Shoulder", "UpperArm", "LowerArm", "Hand", "UpperLeg", "LowerLeg", "Foot", "Toes", ""),
+            ["xsens"] = (side, part, f, p) => f >= 0
+                ? $"{side}{new[] { "First", "Second", "Third", "Fourth", "Fifth" }[f]}{(f == 0 ? new[] { "MC", "PP", "DP" } : new[] { "PP", "MP", "DP" })[p - 1]}"
+                : Body(side, part, "Pelvis", "L3", "T12", "T8", "Neck", "Head",
+                    s => s, "Shoulder", "UpperArm", "ForeArm", "Hand", "UpperLeg", "LowerLeg", "Foot", "Toe", ""),
             ["unreal"] = (side, part, f, p) => f >= 0
                 ? $"{FingerWords[f].ToLowerInvariant()}_0{p}_{char.ToLowerInvariant(side[0])}"
                 : Body(side, part, "pelvis", "spine_01", "spine_02", "spine_03", "neck_01", "head",
@@ -103,7 +107,7 @@ namespace AvatarGo.Core.Tests
             return SessionEvaluator.Evaluate(reader, settings);
         }
 
-        [TestCase("biped"), TestCase("makehuman"), TestCase("daz"), TestCase("cc"), TestCase("unity"), TestCase("vrm1"), TestCase("unreal")]
+        [TestCase("biped"), TestCase("makehuman"), TestCase("daz"), TestCase("cc"), TestCase("unity"), TestCase("vrm1"), TestCase("xsens"), TestCase("unreal")]
         public void AnotherFamilysFingerNamesGiveTheSameHands(string family)
         {
             string text = File.ReadAllText(TestData.Mocap("mixamo_fingers_30fps.bvh"));
