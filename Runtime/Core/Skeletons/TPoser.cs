@@ -196,6 +196,9 @@ namespace AvatarGo.Core
                 case BoneRole.Hips:
                 {
                     int l = map[HumanoidBone.LeftUpperLeg], r = map[HumanoidBone.RightUpperLeg], spine = map[HumanoidBone.Spine];
+                    // 3ds Max Biped hangs the thighs from its first spine bone, which levels them (Spine, below): the hips
+                    // only stand the spine up (the thighs' line here would move with that bone's turn still to come).
+                    if (HumanoidParent(map, l) != j || HumanoidParent(map, r) != j) return Turn(pose, j, At(pose, spine) - At(pose, j), Vector3.UnitY);
                     Vector3 mid = (At(pose, l) + At(pose, r)) * 0.5f;
                     return Turn(pose, j, At(pose, r) - At(pose, l), Vector3.UnitX, At(pose, spine) - mid, Vector3.UnitY);
                 }
@@ -207,6 +210,7 @@ namespace AvatarGo.Core
                     // their offsets are the skeleton's, whatever the rest convention.
                     Vector3 across = ChildrenAcross(map, pose, j, HumanoidBone.LeftShoulder, HumanoidBone.RightShoulder);
                     if (across == Vector3.Zero) across = ChildrenAcross(map, pose, j, HumanoidBone.LeftUpperArm, HumanoidBone.RightUpperArm);
+                    if (across == Vector3.Zero) across = ChildrenAcross(map, pose, j, HumanoidBone.LeftUpperLeg, HumanoidBone.RightUpperLeg); // Biped's thighs
                     return Turn(pose, j, At(pose, next) - At(pose, j), Vector3.UnitY, across, Vector3.UnitX);
                 }
                 case BoneRole.Head:
@@ -288,6 +292,14 @@ namespace AvatarGo.Core
         {
             int l = map[left], r = map[right];
             return l >= 0 && r >= 0 && pose.Skeleton.GetParent(l) == j && pose.Skeleton.GetParent(r) == j ? At(pose, r) - At(pose, l) : Vector3.Zero;
+        }
+
+        // The nearest ancestor of `joint` that is a humanoid bone, or -1.
+        private static int HumanoidParent(HumanoidMap map, int joint)
+        {
+            for (int p = map.Skeleton.GetParent(joint); p >= 0; p = map.Skeleton.GetParent(p))
+                if (map.BoneOf(p) != HumanoidBone.LastBone) return p;
+            return -1;
         }
 
         // Turns joint j by the smallest world rotation taking its current `from` direction onto `to`.
