@@ -78,6 +78,12 @@ namespace AvatarGo.Core
             pose.UpdateWorld();
             var roles = new BoneRole[s.JointCount];
             for (int j = 0; j < roles.Length; j++) roles[j] = RoleOf(map, map.BoneOf(j));
+            // Joints between the hips and the head that are no humanoid bone (UE5's spine_02 and neck_02, the CMU
+            // conversion's Neck1) stand up too: kept in their reference rotation, they would place the neck and head
+            // where the reference (the wearer's first frame, the avatar's rest) bends them, differently for each.
+            int headJoint = map[HumanoidBone.Head], hipsJoint = map[HumanoidBone.Hips];
+            for (int j = s.GetParent(headJoint); j >= 0 && j != hipsJoint; j = s.GetParent(j))
+                if (roles[j] == BoneRole.Other) roles[j] = BoneRole.SpinePath;
 
             // Parents first: each joint turned so that its landmarks point where the T-pose has them.
             for (int j = 0; j < s.JointCount; j++)
@@ -162,7 +168,7 @@ namespace AvatarGo.Core
 
         // ---- What each joint is turned to ------------------------------------------------------------------------------
 
-        private enum BoneRole { Other, Hips, Spine, Head, Clavicle, UpperArm, LowerArm, Hand, Finger, UpperLeg, LowerLeg, Foot, Toes }
+        private enum BoneRole { Other, SpinePath, Hips, Spine, Head, Clavicle, UpperArm, LowerArm, Hand, Finger, UpperLeg, LowerLeg, Foot, Toes }
 
         private static BoneRole RoleOf(HumanoidMap map, HumanoidBone bone)
         {
@@ -204,7 +210,8 @@ namespace AvatarGo.Core
                 }
                 case BoneRole.Spine:
                 {
-                    int next = NextOnSpine(map, bone);
+                    // Up toward its child on the way to the head (the next spine bone, or a joint between that stands up too).
+                    int next = ChildToward(pose.Skeleton, j, map[HumanoidBone.Head]);
                     // Level across the arms' roots when this joint carries them: the clavicles, or the upper arms of a rig
                     // without clavicles (whose shoulders this joint's turn alone places). Only the joint's own children:
                     // their offsets are the skeleton's, whatever the rest convention.
@@ -277,6 +284,11 @@ namespace AvatarGo.Core
                     float drop = Math.Min(AnkleHeightOfLeg * LegLength(map, pose, side) / reach, MathF.Sin(MaxFootPitchDegrees * Rotations.Deg2Rad));
                     return Turn(pose, j, toToe, new Vector3(0f, -drop, MathF.Sqrt(1f - drop * drop)));
                 }
+                case BoneRole.SpinePath:
+                {
+                    int next = ChildToward(pose.Skeleton, j, map[HumanoidBone.Head]);
+                    return next >= 0 && Turn(pose, j, At(pose, next) - At(pose, j), Vector3.UnitY);
+                }
                 case BoneRole.Toes:
                 {
                     int tip = FarthestChild(pose.Skeleton, j);
@@ -292,6 +304,14 @@ namespace AvatarGo.Core
         {
             int l = map[left], r = map[right];
             return l >= 0 && r >= 0 && pose.Skeleton.GetParent(l) == j && pose.Skeleton.GetParent(r) == j ? At(pose, r) - At(pose, l) : Vector3.Zero;
+        }
+
+        // The child of `joint` that `descendant` hangs from (or is), or -1.
+        private static int ChildToward(Skeleton s, int joint, int descendant)
+        {
+            for (int c = descendant; c >= 0; c = s.GetParent(c))
+                if (s.GetParent(c) == joint) return c;
+            return -1;
         }
 
         // The nearest ancestor of `joint` that is a humanoid bone, or -1.
@@ -331,14 +351,6 @@ namespace AvatarGo.Core
         private static Quaternion Frame(Vector3 a, Vector3 b) => Rotations.FromBasis(a, b, Vector3.Cross(a, b));
 
         private static Vector3 At(SkeletonPose pose, int joint) => pose.World[joint].Position;
-
-        private static int NextOnSpine(HumanoidMap map, HumanoidBone bone)
-        {
-            HumanoidBone[] chain = { HumanoidBone.Spine, HumanoidBone.Chest, HumanoidBone.UpperChest, HumanoidBone.Neck, HumanoidBone.Head };
-            for (int i = Array.IndexOf(chain, bone) + 1; i < chain.Length; i++)
-                if (map.Has(chain[i]) && map.Skeleton.IsAncestorOrSelf(map[bone], map[chain[i]])) return map[chain[i]];
-            return map[HumanoidBone.Head];
-        }
 
         // The head's child that is neither an eye nor the jaw and lies above the eyes' level: the crown, if the rig has one.
         private static int Crown(HumanoidMap map, int head)

@@ -96,7 +96,14 @@ namespace AvatarGo.Core.Tests
         /// with the parent's rotation, <c>along</c> of the way from the parent to the child (0: at the parent, as the CMU
         /// database's BVH conversion puts its LHipJoint and LowerBack), and the child hangs from it, keeping its world pose.
         /// </summary>
-        public static BvhClip WithJointsAbove(BvhClip clip, params (string child, string name, float along)[] inserted)
+        public static BvhClip WithJointsAbove(BvhClip clip, params (string child, string name, float along)[] inserted) => WithJointsAbove(clip, false, inserted);
+
+        /// <summary>
+        /// As <see cref="WithJointsAbove(BvhClip, (string, string, float)[])"/>; with <paramref name="turning"/>, each inserted
+        /// joint takes the rotation <c>along</c> of the way from the parent's to the child's, so it turns in the motion as a
+        /// vertebra between two others would (UE5's spine_02, the CMU conversion's Neck1).
+        /// </summary>
+        public static BvhClip WithJointsAbove(BvhClip clip, bool turning, params (string child, string name, float along)[] inserted)
         {
             Skeleton s = clip.Skeleton;
             var joints = new List<NewJoint>();
@@ -109,7 +116,12 @@ namespace AvatarGo.Core.Tests
                     if (child != s.GetName(j)) continue;
                     int above = s.GetParent(j), below = j;
                     if (above < 0) throw new ArgumentException($"{child} is a root.", nameof(inserted));
-                    joints.Add(new NewJoint { Name = name, Parent = parent, Source = above, World = w => new RigidPose(Vector3.Lerp(w[above].Position, w[below].Position, along), w[above].Rotation) });
+                    joints.Add(new NewJoint
+                    {
+                        Name = name, Parent = parent, Source = above,
+                        World = w => new RigidPose(Vector3.Lerp(w[above].Position, w[below].Position, along),
+                            turning ? Quaternion.Normalize(Quaternion.Slerp(w[above].Rotation, w[below].Rotation, along)) : w[above].Rotation),
+                    });
                     parent = joints.Count - 1;
                 }
                 index[j] = joints.Count;
