@@ -212,6 +212,7 @@ namespace AvatarGo.Core
                 {
                     // Up toward its child on the way to the head (the next spine bone, or a joint between that stands up too).
                     int next = ChildToward(pose.Skeleton, j, map[HumanoidBone.Head]);
+                    if (next < 0) next = map[HumanoidBone.Head]; // a spine bone mapped off the way to the head (by hand)
                     // Level across the arms' roots when this joint carries them: the clavicles, or the upper arms of a rig
                     // without clavicles (whose shoulders this joint's turn alone places). Only the joint's own children:
                     // their offsets are the skeleton's, whatever the rest convention.

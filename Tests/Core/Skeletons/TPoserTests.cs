@@ -97,5 +97,18 @@ namespace AvatarGo.Core.Tests
             var map = new HumanoidMap(skeleton, new[] { new KeyValuePair<HumanoidBone, string>(HumanoidBone.LeftHand, "WRIST_LEFT") });
             Assert.That(skeleton.GetName(TPoser.HandLandmark(map, BodySide.Left)), Is.EqualTo("HAND_LEFT"));
         }
+
+        [Test]
+        public void ASpineBoneMappedOffTheWayToTheHeadStillPoses()
+        {
+            // A map given by hand may put a spine bone where no spine is (here the Chest on the head's end joint): the T-pose
+            // turns it toward the head as before and throws nothing (found in review: the child toward the head is none).
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton, new Dictionary<string, HumanoidBone> { ["mixamorig:HeadTop_End"] = HumanoidBone.Chest });
+            Assert.That(map.NameOf(HumanoidBone.Chest), Is.EqualTo("mixamorig:HeadTop_End"));
+            var pose = new SkeletonPose(clip.Skeleton);
+            Assert.DoesNotThrow(() => TPoser.Apply(map, pose, RigidPose.Identity));
+            foreach (RigidPose p in pose.World) Assert.That(Vectors.IsFinite(p.Position) && Rotations.IsFinite(p.Rotation), Is.True, "no NaN");
+        }
 }
 }
