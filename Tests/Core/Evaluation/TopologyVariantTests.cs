@@ -289,18 +289,27 @@ namespace AvatarGo.Core.Tests
 
         // --- Thighs under the first spine joint (3ds Max Biped) ------------------------------------------------------------
 
-        private static void AssertThighsUnderTheSpineKeepTheEndEffectors(string path, int seed, double endEffectorP95Mm)
+        // The clip with a pair of bones (left, right) moved under the joint of another bone, every joint's world pose kept,
+        // simulated and evaluated beside the original: the two reports, what the messages call it, and the moved clip.
+        private static (EvaluationReport own, EvaluationReport other, string what, BvhClip moved) EvaluateMovedUnder(
+            string path, int seed, HumanoidBone left, HumanoidBone right, HumanoidBone newParent, string description)
         {
             BvhClip clip = Read(path);
             HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
-            string spine = map.NameOf(HumanoidBone.Spine);
-            BvhClip biped = AsFile(Topology.Reparented(clip, (map.NameOf(HumanoidBone.LeftUpperLeg), spine), (map.NameOf(HumanoidBone.RightUpperLeg), spine)), "thighs under the spine");
-            AssertWorldPosesKept(clip, biped, false, "thighs under the spine");
-            AssertSameHumanoidJoints(clip, biped, "thighs under the spine");
-            EvaluationReport own = Original(path, seed), other = Evaluate(biped, seed);
-            string what = $"{Path.GetFileName(path)} with its thighs under the first spine joint, seed {seed}";
+            string parent = map.NameOf(newParent);
+            BvhClip moved = AsFile(Topology.Reparented(clip, (map.NameOf(left), parent), (map.NameOf(right), parent)), description);
+            AssertWorldPosesKept(clip, moved, false, description);
+            AssertSameHumanoidJoints(clip, moved, description);
+            EvaluationReport own = Original(path, seed), other = Evaluate(moved, seed);
+            string what = $"{Path.GetFileName(path)} with its {description}, seed {seed}";
             TestContext.WriteLine($"{what}: {Figures(other)} (original {Figures(own)})");
             Assert.That(other.Profile, Is.Not.Null, $"{what}: calibration failed: {other.CalibrationMessage}");
+            return (own, other, what, moved);
+        }
+
+        private static void AssertThighsUnderTheSpineKeepTheEndEffectors(string path, int seed, double endEffectorP95Mm)
+        {
+            var (own, other, what, _) = EvaluateMovedUnder(path, seed, HumanoidBone.LeftUpperLeg, HumanoidBone.RightUpperLeg, HumanoidBone.Spine, "thighs under the first spine joint");
             Assert.That(other.EndEffectorMm.Median, Is.EqualTo(own.EndEffectorMm.Median).Within(0.3), $"{what}: end-effector median (mm)");
             Assert.That(other.EndEffectorMm.P95, Is.LessThanOrEqualTo(endEffectorP95Mm), $"{what}: end-effector p95 (mm)");
             Assert.That(other.AllJointsMm.Mean, Is.LessThanOrEqualTo(own.AllJointsMm.Mean + 6.5), $"{what}: MPJPE (mm)");
@@ -321,18 +330,9 @@ namespace AvatarGo.Core.Tests
 
         private static void AssertClaviclesUnderTheNeckChangeLittle(string path, int seed, double mpjpeMm = 1.2, double midMm = 1.5)
         {
-            BvhClip clip = Read(path);
-            HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
-            string neck = map.NameOf(HumanoidBone.Neck);
-            BvhClip biped = AsFile(Topology.Reparented(clip, (map.NameOf(HumanoidBone.LeftShoulder), neck), (map.NameOf(HumanoidBone.RightShoulder), neck)), "clavicles under the neck");
-            HumanoidMap b = HumanoidNaming.Detect(biped.Skeleton);
-            Assert.That(biped.Skeleton.GetName(biped.Skeleton.GetParent(b[HumanoidBone.LeftShoulder])), Is.EqualTo(neck), "the clavicles hang from the neck");
-            AssertWorldPosesKept(clip, biped, false, "clavicles under the neck");
-            AssertSameHumanoidJoints(clip, biped, "clavicles under the neck");
-            EvaluationReport own = Original(path, seed), other = Evaluate(biped, seed);
-            string what = $"{Path.GetFileName(path)} with its clavicles under the neck, seed {seed}";
-            TestContext.WriteLine($"{what}: {Figures(other)} (original {Figures(own)})");
-            Assert.That(other.Profile, Is.Not.Null, $"{what}: calibration failed: {other.CalibrationMessage}");
+            var (own, other, what, moved) = EvaluateMovedUnder(path, seed, HumanoidBone.LeftShoulder, HumanoidBone.RightShoulder, HumanoidBone.Neck, "clavicles under the neck");
+            HumanoidMap b = HumanoidNaming.Detect(moved.Skeleton);
+            Assert.That(moved.Skeleton.GetParent(b[HumanoidBone.LeftShoulder]), Is.EqualTo(b[HumanoidBone.Neck]), "the clavicles hang from the neck");
             Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(mpjpeMm), $"{what}: MPJPE (mm)");
             Assert.That(other.EndEffectorMm.Median, Is.EqualTo(own.EndEffectorMm.Median).Within(0.05), $"{what}: end-effector median (mm)");
             Assert.That(other.MidJointMm.Median, Is.EqualTo(own.MidJointMm.Median).Within(midMm), $"{what}: elbows' and knees' median (mm)");
