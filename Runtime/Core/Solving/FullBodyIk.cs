@@ -35,20 +35,18 @@ namespace AvatarGo.Core
         private readonly int[] _spine;
         private readonly LimbChain _leftLeg, _rightLeg, _leftArm, _rightArm;
         private readonly Quaternion[] _spineReference;
-        private readonly int _leftClavicle, _rightClavicle;
-        private readonly Quaternion _leftClavicleReference, _rightClavicleReference; // in each clavicle's frame joint's frame
-        private readonly int _leftClavicleFrame, _rightClavicleFrame;
+        private readonly Shoulder _leftShoulder, _rightShoulder;
         private const float MaxClavicleDegrees = 20f;
 
-        // A shrug that reached its goal is held; one whose goal needed more than the shoulder's range says less about the
-        // shoulder the further it is (a longer reach than the avatar's, then a glitch or swapped controllers): held in part,
+        // A shrug that reached its goal is held; one whose goal needed more than the shoulder's range, or lay beyond any
+        // reach (counted as the shoulder's arc that distance would be: ShrugToward), says less about the shoulder the
+        // further it is (a longer reach than the avatar's, then a glitch or swapped controllers): held in part,
         // fading from all of it at MaxClavicleDegrees to none at HoldFadeEndDegrees, so that the held shrug is a continuous
         // function of the goals (held whole or not at all, a goal either side of the 20° line held 20° or nothing for seconds).
         private const float HoldFadeEndDegrees = 30f;
 
         private static float HoldWeight(float neededDegrees) =>
             Math.Clamp((HoldFadeEndDegrees - neededDegrees) / (HoldFadeEndDegrees - MaxClavicleDegrees), 0f, 1f);
-        private Quaternion _leftShrugHeld = Quaternion.Identity, _rightShrugHeld = Quaternion.Identity; // in each clavicle's parent frame
         private readonly int[] _spinePath;
         private readonly int _neck = -1;              // the neck, when it is the last spine joint and more come before it
         private readonly Vector3 _neckInHead;         // the neck joint in the head's frame, in the reference pose
@@ -96,14 +94,10 @@ namespace AvatarGo.Core
             }
             _leftLeg = new LimbChain(s, map[HumanoidBone.LeftUpperLeg], map[HumanoidBone.LeftLowerLeg], map[HumanoidBone.LeftFoot]);
             _rightLeg = new LimbChain(s, map[HumanoidBone.RightUpperLeg], map[HumanoidBone.RightLowerLeg], map[HumanoidBone.RightFoot]);
-            _leftClavicle = map[HumanoidBone.LeftShoulder];
-            _rightClavicle = map[HumanoidBone.RightShoulder];
-            _leftClavicleFrame = ClavicleFrame(s, _leftClavicle);
-            _rightClavicleFrame = ClavicleFrame(s, _rightClavicle);
-            _leftClavicleReference = ClavicleReference(s, _leftClavicle, _leftClavicleFrame, refLocal, refWorld);
-            _rightClavicleReference = ClavicleReference(s, _rightClavicle, _rightClavicleFrame, refLocal, refWorld);
             _leftArm = new LimbChain(s, map[HumanoidBone.LeftUpperArm], map[HumanoidBone.LeftLowerArm], map[HumanoidBone.LeftHand]);
             _rightArm = new LimbChain(s, map[HumanoidBone.RightUpperArm], map[HumanoidBone.RightLowerArm], map[HumanoidBone.RightHand]);
+            _leftShoulder = new Shoulder(s, map[HumanoidBone.LeftShoulder], _leftArm.Root, _neck, refLocal, refWorld);
+            _rightShoulder = new Shoulder(s, map[HumanoidBone.RightShoulder], _rightArm.Root, _neck, refLocal, refWorld);
         }
 
         /// <summary>
@@ -131,7 +125,7 @@ namespace AvatarGo.Core
             {
                 if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The shrug release time must be 0 or more seconds.");
                 _shrugReleaseSeconds = value;
-                if (value == 0f) _leftShrugHeld = _rightShrugHeld = Quaternion.Identity;
+                if (value == 0f) _leftShoulder.Held = _rightShoulder.Held = Quaternion.Identity;
             }
         }
 
@@ -188,11 +182,13 @@ namespace AvatarGo.Core
             if (holdShrugs && deltaSeconds > 0f && deltaSeconds < float.PositiveInfinity)
             {
                 float release = 1f - MathF.Exp(-deltaSeconds / _shrugReleaseSeconds);
-                _leftShrugHeld = Quaternion.Normalize(Quaternion.Slerp(_leftShrugHeld, Quaternion.Identity, release));
-                _rightShrugHeld = Quaternion.Normalize(Quaternion.Slerp(_rightShrugHeld, Quaternion.Identity, release));
+                _leftShoulder.Held = Quaternion.Normalize(Quaternion.Slerp(_leftShoulder.Held, Quaternion.Identity, release));
+                _rightShoulder.Held = Quaternion.Normalize(Quaternion.Slerp(_rightShoulder.Held, Quaternion.Identity, release));
             }
-            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftClavicle, _leftClavicleFrame, _leftClavicleReference, ref _leftShrugHeld, in targets.LeftHand, holdShrugs);
-            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightClavicle, _rightClavicleFrame, _rightClavicleReference, ref _rightShrugHeld, in targets.RightHand, holdShrugs);
+            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftShoulder, in targets.LeftHand, holdShrugs);
+            else _leftShoulder.KeepStill(pose, holdShrugs);
+            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightShoulder, in targets.RightHand, holdShrugs);
+            else _rightShoulder.KeepStill(pose, holdShrugs);
             pose.UpdateWorld();
             return report;
         }
@@ -286,66 +282,92 @@ namespace AvatarGo.Core
         // again, and the shrug is held (whole if it was enough, in part a little beyond: HoldWeight): a goal out of any
         // shoulder's reach (swapped controllers, a glitch) says nothing about where the wearer's shoulder is. What is still
         // out of reach is reported.
-        private static LimbResult SolveArm(SkeletonPose pose, LimbChain arm, int clavicle, int frame, Quaternion clavicleReference, ref Quaternion held,
-            in LimbTarget target, bool hold)
+        private static LimbResult SolveArm(SkeletonPose pose, LimbChain arm, Shoulder shoulder, in LimbTarget target, bool hold)
         {
-            if (clavicle < 0) return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
-            int parent = pose.Skeleton.GetParent(clavicle);
-            Quaternion frameRotation = frame < 0 ? pose.Origin.Rotation : pose.World[frame].Rotation;
-            Quaternion start = hold ? held : Quaternion.Identity;
-            SetClavicle(pose, clavicle, parent, frame, frameRotation, Quaternion.Normalize(start * clavicleReference));
+            if (shoulder.Clavicle < 0) return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
+            Quaternion frameRotation = shoulder.FrameRotation(pose);
+            Quaternion start = hold ? shoulder.Held : Quaternion.Identity;
+            shoulder.Set(pose, frameRotation, Quaternion.Normalize(start * shoulder.Reference));
             LimbResult result = TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
             if (result.Reached || !(result.DistanceLeft > 1e-4f)) return result;
 
-            Quaternion turn = ShrugToward(pose.World[clavicle].Position, pose.World[arm.Root].Position, pose.World[arm.End].Position, target.Goal.Position);
+            Quaternion turn = ShrugToward(pose.World[shoulder.Clavicle].Position, pose.World[arm.Root].Position, pose.World[arm.End].Position,
+                target.Goal.Position, out float beyondDegrees);
             Quaternion shrug = Quaternion.Normalize(Quaternion.Conjugate(frameRotation) * turn * frameRotation * start); // in the frame joint's frame
             if (!Rotations.IsFinite(shrug)) return result;
             float angle = Rotations.AngleDegrees(Quaternion.Identity, shrug);
+            float needed = angle + beyondDegrees;
             if (angle > MaxClavicleDegrees) shrug = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Identity, shrug, MaxClavicleDegrees / angle));
-            SetClavicle(pose, clavicle, parent, frame, frameRotation, Quaternion.Normalize(shrug * clavicleReference));
-            if (hold) held = Quaternion.Normalize(Quaternion.Slerp(held, shrug, HoldWeight(angle)));
+            shoulder.Set(pose, frameRotation, Quaternion.Normalize(shrug * shoulder.Reference));
+            if (hold) shoulder.Held = Quaternion.Normalize(Quaternion.Slerp(shoulder.Held, shrug, HoldWeight(needed)));
             return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
         }
 
-        // Turns the clavicle to `rotation` in its frame joint's frame (its parent's, or the chest's when it hangs from a neck
-        // that follows the head) and updates its world pose.
-        private static void SetClavicle(SkeletonPose pose, int clavicle, int parent, int frame, Quaternion frameRotation, Quaternion rotation)
+        // One side's shoulder: the clavicle (-1: the rig has none), the joint whose frame its rotation and shrug are kept in
+        // (its parent; the joint below the neck when it hangs from a neck that follows the head, as 3ds Max Biped's do, so
+        // that a nod does not swing the shoulders), its calibration rotation in that frame, the joints between it and the
+        // upper arm that are no humanoid bone (MakeHuman's shoulder01), and the shrug held from earlier frames (in the frame
+        // joint's frame).
+        private sealed class Shoulder
         {
-            RigidPose parentWorld = parent < 0 ? pose.Origin : pose.World[parent];
-            Quaternion local = frame == parent ? rotation : Quaternion.Normalize(Quaternion.Conjugate(parentWorld.Rotation) * frameRotation * rotation);
-            pose.Local[clavicle] = pose.Local[clavicle].WithRotation(local);
-            pose.World[clavicle] = parentWorld * pose.Local[clavicle];
-        }
+            public readonly int Clavicle = -1;
+            private readonly int _parent = -1, _frameJoint = -1;
+            public readonly Quaternion Reference = Quaternion.Identity;
+            private readonly int[] _toUpperArm = Array.Empty<int>();
+            public Quaternion Held = Quaternion.Identity;
 
-        // The joint whose frame a clavicle's rotation and shrug are kept in: its parent, or, when it hangs from the neck that
-        // follows the head (3ds Max Biped hangs its clavicles from its Neck bone), the joint below that neck, so that a
-        // nod does not swing the shoulders.
-        private int ClavicleFrame(Skeleton s, int clavicle)
-        {
-            if (clavicle < 0) return -1;
-            int parent = s.GetParent(clavicle);
-            return _neck >= 0 && parent == _neck ? s.GetParent(_neck) : parent;
-        }
+            public Shoulder(Skeleton s, int clavicle, int upperArm, int neck, RigidPose[] refLocal, RigidPose[] refWorld)
+            {
+                if (clavicle < 0 || !s.IsAncestorOrSelf(clavicle, upperArm) || clavicle == upperArm) return;
+                Clavicle = clavicle;
+                _parent = s.GetParent(clavicle);
+                _frameJoint = neck >= 0 && _parent == neck ? s.GetParent(neck) : _parent;
+                Reference = _frameJoint == _parent
+                    ? refLocal[clavicle].Rotation
+                    : Quaternion.Normalize(Quaternion.Conjugate(_frameJoint < 0 ? Quaternion.Identity : refWorld[_frameJoint].Rotation) * refWorld[clavicle].Rotation);
+                var between = new List<int>();
+                for (int j = s.GetParent(upperArm); j != clavicle; j = s.GetParent(j)) between.Insert(0, j);
+                _toUpperArm = between.ToArray();
+            }
 
-        // The clavicle's calibration rotation in its frame joint's frame (its local rotation when that is its parent).
-        private static Quaternion ClavicleReference(Skeleton s, int clavicle, int frame, RigidPose[] refLocal, RigidPose[] refWorld)
-        {
-            if (clavicle < 0) return Quaternion.Identity;
-            if (frame == s.GetParent(clavicle)) return refLocal[clavicle].Rotation;
-            Quaternion frameRotation = frame < 0 ? Quaternion.Identity : refWorld[frame].Rotation;
-            return Quaternion.Normalize(Quaternion.Conjugate(frameRotation) * refWorld[clavicle].Rotation);
+            public Quaternion FrameRotation(SkeletonPose pose) => _frameJoint < 0 ? pose.Origin.Rotation : pose.World[_frameJoint].Rotation;
+
+            // Turns the clavicle to `rotation` in its frame joint's frame and updates the world poses down to the upper arm's
+            // parent (the arm's solve starts from it).
+            public void Set(SkeletonPose pose, Quaternion frameRotation, Quaternion rotation)
+            {
+                RigidPose parentWorld = _parent < 0 ? pose.Origin : pose.World[_parent];
+                Quaternion local = _frameJoint == _parent ? rotation : Quaternion.Normalize(Quaternion.Conjugate(parentWorld.Rotation) * frameRotation * rotation);
+                pose.Local[Clavicle] = pose.Local[Clavicle].WithRotation(local);
+                pose.World[Clavicle] = parentWorld * pose.Local[Clavicle];
+                pose.UpdateWorld(_toUpperArm);
+            }
+
+            // A lost hand's arm keeps its pose; a clavicle kept in another joint's frame than its parent's keeps its place in
+            // that frame too (with the shrug held, as it is released), or the neck's following the head would swing it.
+            public void KeepStill(SkeletonPose pose, bool hold)
+            {
+                if (Clavicle < 0 || _frameJoint == _parent) return;
+                Set(pose, FrameRotation(pose), Quaternion.Normalize((hold ? Held : Quaternion.Identity) * Reference));
+            }
         }
 
         // The least turn of the clavicle about its pivot that brings the goal within reach of the stretched arm: the shoulder
         // moves on the sphere about the pivot, in the plane of pivot, shoulder and goal, until its distance from the goal is
-        // the arm's reach (the law of cosines); toward the goal as far as it goes when no turn is enough.
-        private static Quaternion ShrugToward(Vector3 pivot, Vector3 shoulder, Vector3 hand, Vector3 goal)
+        // the arm's reach (the law of cosines); toward the goal as far as it goes when no turn is enough. beyondDegrees is then
+        // how far the goal lies beyond the farthest reach (clavicle plus arm, along the line from the pivot), as the angle
+        // that much of the shoulder's arc would be (0 when a turn is enough): what the hold weighs on top of the turn, so
+        // that a goal out of any reach within the shrug's range is not held whole, and the hold stays continuous across
+        // the farthest reach.
+        private static Quaternion ShrugToward(Vector3 pivot, Vector3 shoulder, Vector3 hand, Vector3 goal, out float beyondDegrees)
         {
+            beyondDegrees = 0f;
             float reach = Vector3.Distance(shoulder, hand) * (1f - 1e-4f);
             Vector3 toShoulder = shoulder - pivot, toGoal = goal - pivot;
             float c = toShoulder.Length(), d = toGoal.Length();
             Vector3 axis = Vector3.Cross(toShoulder, toGoal);
             if (!(c > 1e-6f) || !(d > 1e-6f) || !(axis.LengthSquared() > 1e-14f)) return Quaternion.Identity;
+            if (d > c + reach) beyondDegrees = (d - c - reach) / c * (180f / MathF.PI);
             float alpha = MathF.Acos(Math.Clamp(Vector3.Dot(toShoulder, toGoal) / (c * d), -1f, 1f));
             float cosNeeded = (c * c + d * d - reach * reach) / (2f * c * d);
             float theta = alpha - MathF.Acos(Math.Clamp(cosNeeded, -1f, 1f));

@@ -287,6 +287,35 @@ namespace AvatarGo.Core.Tests
             Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(1.5), "MPJPE (mm)");
         }
 
+        // --- A joint between the clavicle and the upper arm (MakeHuman's shoulder01) ---------------------------------------
+
+        /// <summary>
+        /// A joint between the clavicle and the upper arm that is no humanoid bone (MakeHuman's default rig has
+        /// clavicle.L, shoulder01.L, upperarm01.L) carries the arm from the clavicle, so a shrug moves the arm with it
+        /// (MocapBank with a joint inserted halfway along each clavicle, every joint's world pose kept). Before, the arm was
+        /// solved from where that joint had been before the shrug, then moved with it: hands off their controllers.
+        /// </summary>
+        [Test]
+        public void AJointBetweenTheClavicleAndTheUpperArmMovesWithTheShrug()
+        {
+            string path = TestData.Mocap("mocapbank_30fps.bvh");
+            BvhClip clip = Read(path);
+            BvhClip girdle = AsFile(Topology.WithJointsAbove(clip, ("LeftShoulder", "LeftGirdle", 0.5f), ("RightShoulder", "RightGirdle", 0.5f)), "girdle");
+            HumanoidMap map = HumanoidNaming.Detect(girdle.Skeleton);
+            Assert.That(map.BoneOf(girdle.Skeleton.IndexOf("LeftGirdle")), Is.EqualTo(HumanoidBone.LastBone), "the inserted joint is no humanoid bone");
+            Assert.That(map.NameOf(HumanoidBone.LeftShoulder), Is.EqualTo("LeftCollar"));
+            Assert.That(map.NameOf(HumanoidBone.LeftUpperArm), Is.EqualTo("LeftShoulder"));
+            AssertWorldPosesKept(clip, girdle, false, "girdle");
+            EvaluationReport own = Original(path, 1), other = Evaluate(girdle, 1);
+            TestContext.WriteLine($"with a joint along each clavicle: {Figures(other)} (original {Figures(own)})");
+            Assert.That(other.Profile, Is.Not.Null, other.CalibrationMessage);
+            Assert.That(other.EndEffectorMm.Median, Is.EqualTo(own.EndEffectorMm.Median).Within(0.05), "end-effector median (mm)");
+            Assert.That(other.EndEffectorMm.P95, Is.EqualTo(own.EndEffectorMm.P95).Within(0.1), "end-effector p95 (mm)");
+            Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(0.1), "MPJPE (mm)");
+            Assert.That(other.MidJointMm.Median, Is.EqualTo(own.MidJointMm.Median).Within(0.5), "elbows and knees median (mm)");
+            Assert.That(other.UnreachedHandFrames, Is.EqualTo(own.UnreachedHandFrames).Within(2), "frames with a hand out of reach");
+        }
+
         // --- Thighs under the first spine joint (3ds Max Biped) ------------------------------------------------------------
 
         // The clip with a pair of bones (left, right) moved under the joint of another bone, every joint's world pose kept,

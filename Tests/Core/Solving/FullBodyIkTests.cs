@@ -373,6 +373,68 @@ namespace AvatarGo.Core.Tests
             Assert.That(last, Is.LessThan(1e-3f), "a goal far beyond the shoulder's range holds nothing");
         }
 
+        // Frame 0 of mocapbank with the left hand's goal `degreesOff` off the line from the clavicle's pivot through the
+        // (unshrugged) shoulder, `beyond` metres farther from the pivot than clavicle and arm reach together (negative: nearer).
+        private static (FullBodyIk ik, SkeletonPose pose, BodyTargets targets, Truth truth) GoalAlongTheClavicle(float degreesOff, float beyond)
+        {
+            var truth = new Truth("mocapbank_30fps.bvh");
+            var ik = new FullBodyIk(truth.Map);
+            var pose = new SkeletonPose(truth.Clip.Skeleton);
+            var targets = new BodyTargets();
+            truth.Targets(0, ref targets);
+            ik.Solve(in targets, pose);
+            Vector3 pivot = pose.World[truth[HumanoidBone.LeftShoulder]].Position, shoulder = pose.World[truth[HumanoidBone.LeftUpperArm]].Position;
+            float arm = Vector3.Distance(shoulder, pose.World[truth[HumanoidBone.LeftLowerArm]].Position)
+                + Vector3.Distance(pose.World[truth[HumanoidBone.LeftLowerArm]].Position, pose.World[truth[HumanoidBone.LeftHand]].Position);
+            Vector3 along = Vector3.Normalize(shoulder - pivot);
+            Vector3 off = Vector3.Transform(along, Rotations.AngleAxis(degreesOff, Vector3.Cross(along, Vector3.UnitY)));
+            Vector3 goal = pivot + off * (Vector3.Distance(shoulder, pivot) + arm + beyond);
+            targets.LeftHand = new LimbTarget(new RigidPose(goal, targets.LeftHand.Goal.Rotation), goal - Vector3.UnitY * arm);
+            return (ik, pose, targets, truth);
+        }
+
+        /// <summary>
+        /// A goal beyond any reach (farther from the clavicle's pivot than clavicle and arm together) says nothing about the
+        /// shoulder even when the turn toward it lies within the shrug's 20°: the hold weighs how far beyond it lies as the
+        /// shoulder's arc that distance would be, so it fades out there as it does past the 20° (found in review: a glitch 2 m
+        /// out along the clavicle's line was held whole for seconds). 10° off the clavicle's line, the goal moved out from
+        /// 2 cm within the farthest reach to 10 cm beyond it, one step a millimetre: held whole up to it and a little past,
+        /// nothing a few centimetres past it, no jump in between. (Within the farthest reach the least turn that reaches rises
+        /// steeply as the goal nears it: 4.7° to 10° over its last millimetre, the law of cosines' square root; that is the
+        /// shoulder's geometry, not the hold.)
+        /// </summary>
+        [Test]
+        public void AGoalBeyondAnyReachIsNotHeld()
+        {
+            float previous = 0f, largestStep = 0f, atTheFarthestReach = 0f, last = 0f;
+            for (int mm = -20; mm <= 100; mm++)
+            {
+                var (ik, pose, targets, truth) = GoalAlongTheClavicle(10f, mm * 0.001f);
+                ik.Solve(in targets, pose, 1f / 90);
+                BodyTargets within = targets;
+                within.LeftHand.Goal = new RigidPose(Vector3.Lerp(pose.World[truth[HumanoidBone.LeftUpperArm]].Position, targets.LeftHand.Goal.Position, 0.5f), targets.LeftHand.Goal.Rotation);
+                ik.Solve(in within, pose, 1e-6f);
+                float held = ClavicleTurnDegrees(pose, truth);
+                if (mm > 0) largestStep = Math.Max(largestStep, Math.Abs(held - previous));
+                if (mm == 0) atTheFarthestReach = held;
+                previous = last = held;
+            }
+            var (ik2, pose2, targets2, truth2) = GoalAlongTheClavicle(15f, 2f);
+            ik2.Solve(in targets2, pose2, 1f / 90);
+            float glitch = ClavicleTurnDegrees(pose2, truth2);
+            BodyTargets near = targets2;
+            near.LeftHand.Goal = new RigidPose(Vector3.Lerp(pose2.World[truth2[HumanoidBone.LeftUpperArm]].Position, targets2.LeftHand.Goal.Position, 0.1f), targets2.LeftHand.Goal.Rotation);
+            ik2.Solve(in near, pose2, 1e-6f);
+            float glitchHeld = ClavicleTurnDegrees(pose2, truth2);
+            TestContext.WriteLine($"10 deg off the line: held {atTheFarthestReach:F2} deg at the farthest reach, {last:F3} deg 10 cm beyond, largest change over 1 mm {largestStep:F2} deg; " +
+                $"2 m beyond, 15 deg off: turned {glitch:F2} deg that frame, held {glitchHeld:F3} deg");
+            Assert.That(atTheFarthestReach, Is.EqualTo(10f).Within(0.5f), "at the farthest reach the whole turn onto the line is held");
+            Assert.That(largestStep, Is.LessThan(1f), "no jump in what is held");
+            Assert.That(last, Is.LessThan(1e-3f), "10 cm beyond any reach holds nothing");
+            Assert.That(glitch, Is.GreaterThan(10f), "the frame of the glitch still turns the clavicle toward it");
+            Assert.That(glitchHeld, Is.LessThan(1e-3f), "a glitch 2 m out is not held");
+        }
+
         /// <summary>
         /// A nod swings the shoulders no more when they hang from the neck: on MocapBank with its clavicles moved under its neck
         /// (as 3ds Max Biped hangs them), the head target turned 30° forward about its own position turns the neck as on the
@@ -393,9 +455,25 @@ namespace AvatarGo.Core.Tests
             Assert.That(shoulder, Is.EqualTo(ownShoulder).Within(15f), "the shoulder moves only as far as its root rides on the neck");
         }
 
+        /// <summary>
+        /// Nor when the hand of that shoulder is lost as the head nods: its arm keeps its pose, and its clavicle keeps its
+        /// place with the chest as on the original (found in review: it kept its rotation on the neck and swung with it).
+        /// </summary>
+        [Test]
+        public void ANodDoesNotSwingTheShoulderOfALostHand()
+        {
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            var (ownClavicle, _, ownShoulder) = Nod(new Truth(clip), leftHandLost: true);
+            var (clavicle, neck, shoulder) = Nod(new Truth(Topology.Reparented(clip, ("LeftCollar", "Neck"), ("RightCollar", "Neck"))), leftHandLost: true);
+            TestContext.WriteLine($"nod 30 deg, left hand lost: clavicle {ownClavicle:F3} deg on the chest, {clavicle:F3} deg under the neck (neck {neck:F2} deg); shoulder {ownShoulder:F1} / {shoulder:F1} mm");
+            Assert.That(neck, Is.GreaterThan(3f), "the neck follows the head");
+            Assert.That(clavicle, Is.EqualTo(ownClavicle).Within(0.01f), "the lost hand's clavicle turns as on the original, not with the neck");
+            Assert.That(shoulder, Is.EqualTo(ownShoulder).Within(15f), "its shoulder moves only as far as its root rides on the neck");
+        }
+
         // The turn of the neck and the left clavicle (°) and how far the left shoulder moves (mm) when the head target of
-        // MocapBank's first frame turns 30° forward about its own position.
-        private static (float clavicle, float neck, float shoulder) Nod(Truth truth)
+        // MocapBank's first frame turns 30° forward about its own position (the left hand lost on that frame if asked).
+        private static (float clavicle, float neck, float shoulder) Nod(Truth truth, bool leftHandLost = false)
         {
             var ik = new FullBodyIk(truth.Map);
             var pose = new SkeletonPose(truth.Clip.Skeleton);
@@ -407,6 +485,7 @@ namespace AvatarGo.Core.Tests
             BodyTargets nod = targets;
             Vector3 hipLine = pose.World[truth[HumanoidBone.RightUpperLeg]].Position - pose.World[truth[HumanoidBone.LeftUpperLeg]].Position;
             nod.Head = new RigidPose(targets.Head.Position, Rotations.AngleAxis(30f, hipLine) * targets.Head.Rotation);
+            nod.LeftHand.IsActive = !leftHandLost;
             ik.Solve(in nod, pose);
             return (Rotations.AngleDegrees(clavicle, pose.World[truth[HumanoidBone.LeftShoulder]].Rotation),
                 Rotations.AngleDegrees(neck, pose.World[truth[HumanoidBone.Neck]].Rotation),
