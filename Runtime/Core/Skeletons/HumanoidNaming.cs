@@ -317,11 +317,14 @@ namespace AvatarGo.Core
         private static readonly string[] PhalanxWords = { "proximal", "intermediate", "distal" };
         private static readonly string[] ThumbWithMetacarpal = { "metacarpal", "proximal", "distal" };
 
-        // Biped when a Finger0 is under the hand, MakeHuman when a finger1-1 is (and no Finger0: Biped's Finger11 is the index
-        // finger's second phalanx), else by finger.
+        // Biped when a Finger0 is under the hand, or a Finger1 with its Finger11 (a Biped hand exported without its thumb);
+        // MakeHuman when a finger1-1 is without either (MakeHuman has no plain finger1; Biped's Finger11 is the index finger's
+        // second phalanx), else by finger.
         private static FingerNumbering NumberingOf(Skeleton s, string[] cores, Side[] sides, Side side, int hand)
         {
             if (FindUnderHand(s, cores, sides, side, hand, hand, "finger0") >= 0) return FingerNumbering.Biped;
+            if (FindUnderHand(s, cores, sides, side, hand, hand, "finger1") >= 0 && FindUnderHand(s, cores, sides, side, hand, hand, "finger11") >= 0)
+                return FingerNumbering.Biped;
             if (FindUnderHand(s, cores, sides, side, hand, hand, "finger11") >= 0) return FingerNumbering.MakeHuman;
             return FingerNumbering.ByFinger;
         }

@@ -14,10 +14,12 @@ namespace AvatarGo.Core
     /// <remarks>
     /// <para>Every joint is oriented from where its children are in its own frame (the skeleton's rest translations,
     /// which no bind pose changes), never from its rest rotation: a joint with two landmarks is fixed completely (the
-    /// hips by the hip line and the spine, the chest by the neck and the clavicles (the upper arms on a rig without
-    /// clavicles), the hand by the middle finger's base
+    /// hips by the hip line and the spine; when the thighs hang from the first spine joint, as 3ds Max Biped's do, the
+    /// hips only stand the spine up and that joint levels the thighs; the chest by the neck and the clavicles (the upper
+    /// arms on a rig without clavicles), the hand by the middle finger's base
     /// and the little-to-index line, the head by its eyes and crown); a joint with one (an upper arm, a shin, a finger
-    /// bone) gets its direction. The twist about such a bone is not given by any landmark: it is the smallest turn from
+    /// bone) gets its direction, each spine bone toward its own child on the way to the head, and the joints on that way
+    /// that are no humanoid bone (UE5's spine_02) stand up with them. The twist about such a bone is not given by any landmark: it is the smallest turn from
     /// <c>twistReference</c> (the rest pose unless another pose is given), and nothing in the core depends on it (the
     /// solver bends limbs from positions; tested by rewriting clips in random local axes).</para>
     /// <para>Fallbacks where a landmark is missing: hips whose spine starts on the hip line keep the reference pitch; a
@@ -54,7 +56,8 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// As <see cref="Apply(HumanoidMap, SkeletonPose, RigidPose)"/>, taking the twists no landmark fixes (about single-child
-        /// bones, and the rotation of joints that are not humanoid bones) from <paramref name="twistReference"/>: local
+        /// bones and the joints between the hips and the head that are no humanoid bones, and the whole rotation of the other
+        /// joints that are not humanoid bones) from <paramref name="twistReference"/>: local
         /// poses of the skeleton (only their rotations are read), or null for the rest pose. A simulated wearer passes the
         /// first frame of its motion, so that its T-pose and its motion share those twists.
         /// </summary>
@@ -82,8 +85,11 @@ namespace AvatarGo.Core
             // conversion's Neck1) stand up too: kept in their reference rotation, they would place the neck and head
             // where the reference (the wearer's first frame, the avatar's rest) bends them, differently for each.
             int headJoint = map[HumanoidBone.Head], hipsJoint = map[HumanoidBone.Hips];
-            for (int j = s.GetParent(headJoint); j >= 0 && j != hipsJoint; j = s.GetParent(j))
-                if (roles[j] == BoneRole.Other) roles[j] = BoneRole.SpinePath;
+            // (Only on the way down from the head to the hips: with the hips mapped by hand beside the spine, the walk would
+            // pass them and mark the joints above, a floor root among them.)
+            if (s.IsAncestorOrSelf(hipsJoint, headJoint))
+                for (int j = s.GetParent(headJoint); j >= 0 && j != hipsJoint; j = s.GetParent(j))
+                    if (roles[j] == BoneRole.Other) roles[j] = BoneRole.SpinePath;
 
             // Parents first: each joint turned so that its landmarks point where the T-pose has them.
             for (int j = 0; j < s.JointCount; j++)
@@ -154,8 +160,8 @@ namespace AvatarGo.Core
         }
 
         /// <summary>
-        /// The joint that marks where a hand points: the middle finger's base, else, for hands without finger bones, the hand's
-        /// child whose chain reaches farthest (an End Site at the knuckles or fingertips; the Kinects' hand centre, followed
+        /// The joint that marks where a hand points: the middle finger's base, else (no middle finger, with or without other
+        /// finger bones) the hand's child whose chain reaches farthest (an End Site at the knuckles or fingertips; the Kinects' hand centre, followed
         /// by the hand tip, rather than the thumb beside it), else -1 (the forearm's direction is used).
         /// </summary>
         public static int HandLandmark(HumanoidMap map, BodySide side)

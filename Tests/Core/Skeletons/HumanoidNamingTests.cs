@@ -436,6 +436,27 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void BipedFingersWithoutTheThumbAreNotReadAsMakeHumans()
+        {
+            // A Biped hand exported without its thumb (Finger0): Finger1 is still the index finger and Finger11 its second
+            // phalanx, not MakeHuman's finger1-1 thumb (found in review: every finger took the one before it).
+            var entries = new List<string>
+            {
+                "Bip01", "Bip01_Pelvis<Bip01", "Bip01_Spine<Bip01_Pelvis", "Bip01_Spine1<Bip01_Spine", "Bip01_Neck<Bip01_Spine1", "Bip01_Head<Bip01_Neck",
+                "Bip01_L_Clavicle<Bip01_Neck", "Bip01_L_UpperArm<Bip01_L_Clavicle", "Bip01_L_Forearm<Bip01_L_UpperArm", "Bip01_L_Hand<Bip01_L_Forearm",
+                "Bip01_R_Clavicle<Bip01_Neck", "Bip01_R_UpperArm<Bip01_R_Clavicle", "Bip01_R_Forearm<Bip01_R_UpperArm", "Bip01_R_Hand<Bip01_R_Forearm",
+                "Bip01_L_Thigh<Bip01_Pelvis", "Bip01_L_Calf<Bip01_L_Thigh", "Bip01_L_Foot<Bip01_L_Calf",
+                "Bip01_R_Thigh<Bip01_Pelvis", "Bip01_R_Calf<Bip01_R_Thigh", "Bip01_R_Foot<Bip01_R_Calf",
+            };
+            for (int finger = 1; finger <= 4; finger++)
+                entries.AddRange(new[] { $"Bip01_L_Finger{finger}<Bip01_L_Hand", $"Bip01_L_Finger{finger}1<Bip01_L_Finger{finger}", $"Bip01_L_Finger{finger}2<Bip01_L_Finger{finger}1" });
+            HumanoidMap map = HumanoidNaming.Detect(Build(entries.ToArray()));
+            Assert.That(map.Has(HumanoidBone.LeftThumbProximal), Is.False, "no thumb");
+            Expect(map, "LeftIndexProximal=Bip01_L_Finger1", "LeftIndexIntermediate=Bip01_L_Finger11", "LeftIndexDistal=Bip01_L_Finger12",
+                "LeftMiddleProximal=Bip01_L_Finger2", "LeftRingProximal=Bip01_L_Finger3", "LeftLittleProximal=Bip01_L_Finger4", "LeftLittleDistal=Bip01_L_Finger42");
+        }
+
+        [Test]
         public void DazGenesisNames()
         {
             // Genesis 8: "hip" above "pelvis" (the legs under it, the spine beside it), bend and twist bones along each limb.
