@@ -224,7 +224,9 @@ namespace AvatarGo.Core
             HumanoidMap scaled = _calibrator.ScaledAvatar;
             RigidPose reference0 = calibrationPose.World[scaled[BodyRoles.JointOf(referenceRole)]];
             RigidPose joint0 = calibrationPose.World[scaled[BodyRoles.JointOf(role)]];
-            RigidPose referenceNow = reference.Mean * ActiveProfile.JointInDevice(referenceRole);
+            // The measured offset of the reference, whatever the offset mode (the fixed ones would write their error into the
+            // profile that is saved).
+            RigidPose referenceNow = reference.Mean * _measured.JointInDevice(referenceRole);
             _measured = _measured.WithRemeasuredDevice(role, device.Mean, referenceNow * joint0.RelativeTo(reference0));
             Bind(true);
             return true;
@@ -282,18 +284,20 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// Applies the hands' <see cref="HandSettings.Controller"/> and <see cref="HandSettings.Placement"/> (and the offset
-        /// mode) now instead of at the next calibration: builds the finger solvers (allocates, about 1 ms per hand).
+        /// mode) now instead of at the next calibration: builds the finger solvers (allocates, about 1 ms per hand). Swaps and
+        /// re-measured devices since the calibration are kept.
         /// </summary>
         public void ApplyHandSettings()
         {
-            if (_mapper != null) Setup();
+            if (_mapper != null) Setup(keepMeasured: true);
         }
 
         // ---- Setup, once per calibration ----------------------------------------------------------------------
 
-        private void Setup()
+        // keepMeasured: the hands' settings changed, not the calibration, so the swaps and re-measured devices since it stay.
+        private void Setup(bool keepMeasured = false)
         {
-            _measured = _calibrator.Profile;
+            if (!keepMeasured || _measured == null) _measured = _calibrator.Profile;
             HumanoidMap scaled = _calibrator.ScaledAvatar;
             SkeletonPose calibrationPose = _calibrator.AvatarPose;
             _pose = new SkeletonPose(scaled.Skeleton);
@@ -314,8 +318,11 @@ namespace AvatarGo.Core
             float ankles = Math.Min(w[scaled[HumanoidBone.LeftFoot]].Position.Y, w[scaled[HumanoidBone.RightFoot]].Position.Y);
             _swaps = new RoleSwapDetector(Vector3.Transform(right, Quaternion.Conjugate(w[scaled[HumanoidBone.Hips]].Rotation)),
                 w[scaled[HumanoidBone.Head]].Position.Y - ankles, Settings.Tracking);
-            LastSwap = RoleSwap.None;
-            LastSwapTime = double.NaN;
+            if (!keepMeasured)
+            {
+                LastSwap = RoleSwap.None;
+                LastSwapTime = double.NaN;
+            }
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {
                 SetUpFingers(side);

@@ -65,6 +65,25 @@ namespace AvatarGo.Core.Tests
             Assert.That(wrist, Is.LessThan(0.015f), "the wrists are back on the wearer's, as before the swap (m; the T-pose's stretched arms are at the end of their reach)");
         }
 
+        /// <summary>
+        /// Changing the hands' settings after a swap (a controller profile set, the fingers component enabled again) keeps the
+        /// swap: found in review, it rebuilt everything from the calibration and gave the devices their old roles again.
+        /// </summary>
+        [Test]
+        public void ApplyingHandSettingsKeepsASwap()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 61);
+            double t = 0;
+            SelfAvatarPipeline pipeline = Calibrated(wearer, ref t);
+            int leftBefore = pipeline.DeviceIndexOf(DeviceRole.LeftHand);
+            Assert.That(pipeline.SwapDevices(DeviceRole.LeftHand, DeviceRole.RightHand), Is.True);
+            pipeline.Settings.Hand(BodySide.Left).Controller = null;
+            pipeline.ApplyHandSettings();
+            Assert.That(pipeline.DeviceIndexOf(DeviceRole.RightHand), Is.EqualTo(leftBefore), "the devices keep their new roles");
+            Assert.That(pipeline.Profile.DeviceId(DeviceRole.RightHand), Is.EqualTo(wearer.Devices[leftBefore].Id), "and the profile to save says so");
+            Assert.That(pipeline.Hand(BodySide.Left).NoFingerIkReason, Does.Contain("no controller profile"), "the new settings are applied");
+        }
+
         [Test]
         public void HandsCrossedForAMomentAreNotASwap()
         {
@@ -119,6 +138,32 @@ namespace AvatarGo.Core.Tests
             (_, float after) = Stand(wearer, pipeline, ref t, 1.5, s => s[Index(DeviceRole.LeftFoot)] = new DeviceSample(s[Index(DeviceRole.LeftFoot)].Pose * slip, true));
             Assert.That(after, Is.LessThan(0.006f), "measured again, the ankle follows the wearer's (m; placed by the pelvis, whose own offset is within 3 mm)");
             Assert.That(pipeline.RecalibrateDevice(DeviceRole.LeftFoot, out _), Is.True, "again, standing still");
+        }
+
+        /// <summary>
+        /// With the paper's fixed offsets switched on, re-measuring a device still writes the measured offset into the profile
+        /// (found in review: it placed the joint by the pelvis's fixed offset, so the saved profile was off by the pelvis's
+        /// measured offset, about 10 cm). The same slip re-measured in both modes gives the same profile.
+        /// </summary>
+        [Test]
+        public void ReMeasuringWithFixedOffsetsWritesTheMeasuredOffset()
+        {
+            var slip = new RigidPose(new Vector3(0.03f, 0f, 0.01f), Rotations.AngleAxis(40f, new Vector3(0.2f, 1f, 0.1f)));
+            RigidPose Remeasured(OffsetMode mode)
+            {
+                var wearer = new Wearer("mocapbank_30fps.bvh", 65);
+                double t = 0;
+                var settings = new PipelineSettings { Offsets = mode };
+                var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map, settings);
+                wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+                Assume.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), pipeline.LastCalibrationStep.Message);
+                Stand(wearer, pipeline, ref t, 1.0, s => s[Index(DeviceRole.LeftFoot)] = new DeviceSample(s[Index(DeviceRole.LeftFoot)].Pose * slip, true));
+                Assert.That(pipeline.RecalibrateDevice(DeviceRole.LeftFoot, out string reason), Is.True, reason);
+                return pipeline.Profile.JointInDevice(DeviceRole.LeftFoot);
+            }
+            RigidPose exact = Remeasured(OffsetMode.Exact), withFixed = Remeasured(OffsetMode.Fixed);
+            Assert.That(Vector3.Distance(withFixed.Position, exact.Position), Is.LessThan(1e-4f), "the same offset (m)");
+            Assert.That(Rotations.AngleDegrees(withFixed.Rotation, exact.Rotation), Is.LessThan(0.01f), "the same rotation (deg)");
         }
 
         [Test]
