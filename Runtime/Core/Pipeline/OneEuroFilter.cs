@@ -45,7 +45,15 @@ namespace AvatarGo.Core
             {
                 if (!samples[d].IsTracked) { _has[d] = false; continue; }
                 RigidPose x = samples[d].Pose;
-                if (!_has[d] || !(time > _time[d]))
+                if (_has[d] && !(time > _time[d]))
+                {
+                    // No time passed (a repeated frame) or the clock went back (a replay restarted): the filtered pose stays
+                    // as it is, and the clock restarts from here. Seeded again from the raw sample, it jumped by the whole lag.
+                    _time[d] = time;
+                    samples[d] = new DeviceSample(_value[d], true);
+                    continue;
+                }
+                if (!_has[d])
                 {
                     _has[d] = true;
                     _value[d] = x;

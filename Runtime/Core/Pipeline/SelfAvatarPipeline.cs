@@ -40,6 +40,7 @@ namespace AvatarGo.Core
         private OneEuroFilter _smoothing;                 // null when TrackingSettings.Smoothing is off
         private SampleWindow _window;                     // the last half second after calibration, for RecalibrateDevice
         private DeviceSample[] _accepted, _effective;
+        private double _lastFiniteTime;                   // the last frame time that was a finite number
         private CalibrationProfile _measured;             // the calibration, with later swaps and re-measured devices
         private readonly PerRole<int> _roles = new PerRole<int>(-1);
         private float _armLength;
@@ -132,6 +133,10 @@ namespace AvatarGo.Core
             if (samples.Length != _devices.Length) throw new ArgumentException($"Expected {_devices.Length} samples, got {samples.Length}.", nameof(samples));
             if (trigger.Length != 0 && trigger.Length != _devices.Length) throw new ArgumentException($"Expected {_devices.Length} trigger values or none, got {trigger.Length}.", nameof(trigger));
             if (grip.Length != 0 && grip.Length != _devices.Length) throw new ArgumentException($"Expected {_devices.Length} grip values or none, got {grip.Length}.", nameof(grip));
+            // A time that is not a number or infinite (a broken clock, a bad recording) is a frame in which no time passed:
+            // taken on, it would hold a part lost on that frame for good and open the glitch filter.
+            if (double.IsNaN(time) || double.IsInfinity(time)) time = _lastFiniteTime;
+            else _lastFiniteTime = time;
             if (_mapper == null)
             {
                 CalibrationStep step = _calibrator.Update(time, samples, events);

@@ -44,6 +44,43 @@ namespace AvatarGo.Core.Tests
             Assert.That(worst, Is.LessThan(0.01f), "behind by less than 1 cm at 1.5 m/s (m)");
         }
 
+        /// <summary>
+        /// A frame in which no time passed, or the clock went back, keeps the filtered pose where it was; the next frames go
+        /// on from it (found in review: such a frame seeded the filter again from the raw sample, a jump by the whole lag,
+        /// centimetres on a moving hand, and its speed estimate started from zero).
+        /// </summary>
+        [TestCase(0.0)]
+        [TestCase(-5.0)]
+        public void ARepeatedOrBackwardFrameDoesNotJump(double back)
+        {
+            var filter = new OneEuroFilter(1, 1f, 0.5f);
+            var one = new DeviceSample[1];
+            Vector3 Path(int i) => new Vector3(1.5f * i / 90f, 1, 0);
+            double t = 0;
+            Vector3 previous = default;
+            for (int i = 0; i < 90; i++)
+            {
+                one[0] = At(Path(i));
+                filter.Apply(t = i / 90.0, one);
+                previous = one[0].Pose.Position;
+            }
+            float lag = Vector3.Distance(previous, Path(89));
+            one[0] = At(Path(90));
+            filter.Apply(t += back, one);
+            Assert.That(Vector3.Distance(one[0].Pose.Position, previous), Is.LessThan(1e-6f), "the filtered pose stays (m)");
+            float largestStep = 0f;
+            for (int i = 91; i < 120; i++)
+            {
+                one[0] = At(Path(i));
+                filter.Apply(t += 1 / 90.0, one);
+                largestStep = Math.Max(largestStep, Vector3.Distance(one[0].Pose.Position, previous));
+                previous = one[0].Pose.Position;
+            }
+            TestContext.WriteLine($"lag {lag * 1000:F1} mm, largest step after the frame {largestStep * 1000:F1} mm (the path moves {1.5f / 90 * 1000:F1} mm a frame)");
+            Assert.That(lag, Is.GreaterThan(0.01f), "the filter lags enough for a re-seed to show (m)");
+            Assert.That(largestStep, Is.LessThan(lag), "no step as large as the lag afterwards");
+        }
+
         [Test]
         public void TheResultDoesNotDependOnTheFrameRate()
         {

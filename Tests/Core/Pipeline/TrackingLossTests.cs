@@ -71,20 +71,24 @@ namespace AvatarGo.Core.Tests
 
         // Replays the session with one role's device lost from `from` seconds after calibration for `seconds`, and calls
         // check at the end of the loss with the pipeline and the frame.
-        private static void LoseFor(DeviceRole role, double from, double seconds, Action<SelfAvatarPipeline, SessionFrame> check)
+        private static void LoseFor(DeviceRole role, double from, double seconds, Action<SelfAvatarPipeline, SessionFrame> check, double timeOfTheFirstLostFrame = 0)
         {
             int device = Array.IndexOf(SessionSimulator.DeviceRoles, role);
             double calibratedAt = double.NaN;
-            bool checkedOnce = false;
+            bool checkedOnce = false, lostBefore = false;
             string session = MocapBank;
             using SessionReader reader = Sessions.Read(session);
             var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
             SessionFrame frame = reader.CreateFrame();
             while (reader.ReadFrame(frame))
             {
-                if (!double.IsNaN(calibratedAt) && frame.Time >= calibratedAt + from && frame.Time < calibratedAt + from + seconds)
-                    frame.Samples[device] = new DeviceSample(frame.Samples[device].Pose, false);
+                bool lost = !double.IsNaN(calibratedAt) && frame.Time >= calibratedAt + from && frame.Time < calibratedAt + from + seconds;
+                if (lost) frame.Samples[device] = new DeviceSample(frame.Samples[device].Pose, false);
+                double time = frame.Time;
+                if (lost && !lostBefore && timeOfTheFirstLostFrame != 0) frame.Time = timeOfTheFirstLostFrame;
+                lostBefore |= lost;
                 pipeline.Update(frame);
+                frame.Time = time;
                 if (double.IsNaN(calibratedAt) && pipeline.State == CalibrationState.Calibrated) calibratedAt = frame.Time;
                 if (!checkedOnce && !double.IsNaN(calibratedAt) && frame.Time >= calibratedAt + from + seconds - 1.0 / 90)
                 {
@@ -106,6 +110,26 @@ namespace AvatarGo.Core.Tests
                 Assert.That(ankle.Y - p.Profile.FloorHeight, Is.EqualTo(ankleAtCalibration).Within(0.03f), "on the floor (m)");
                 Assert.That(new Vector2(ankle.X - hips.X, ankle.Z - hips.Z).Length(), Is.LessThan(0.3f), "under the hips (m)");
             });
+        }
+
+        /// <summary>
+        /// A frame whose time is not a number or infinite (a broken clock, a bad recording) is a frame in which no time passed:
+        /// a foot lost on it still settles (found in review: the time of the loss became NaN, so the lost foot was held where
+        /// it was for good, and the glitch filter let anything through for two frames).
+        /// </summary>
+        [TestCase(double.NaN)]
+        [TestCase(double.PositiveInfinity)]
+        [TestCase(double.NegativeInfinity)]
+        public void ALostFootSettlesEvenWhenItsFirstFrameHasNoTime(double time)
+        {
+            LoseFor(DeviceRole.LeftFoot, 2.0, 2.5, (p, f) =>
+            {
+                Vector3 ankle = p.Pose.World[p.ScaledAvatar[HumanoidBone.LeftFoot]].Position;
+                Vector3 hips = p.Pose.World[p.ScaledAvatar[HumanoidBone.Hips]].Position;
+                float ankleAtCalibration = p.Profile.JointAtCalibration(DeviceRole.LeftFoot).Position.Y - p.Profile.FloorHeight;
+                Assert.That(ankle.Y - p.Profile.FloorHeight, Is.EqualTo(ankleAtCalibration).Within(0.03f), "on the floor (m)");
+                Assert.That(new Vector2(ankle.X - hips.X, ankle.Z - hips.Z).Length(), Is.LessThan(0.3f), "under the hips (m)");
+            }, time);
         }
 
         [Test]
