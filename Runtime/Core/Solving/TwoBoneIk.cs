@@ -68,10 +68,11 @@ namespace AvatarGo.Core
                 float delta = angleNow - MathF.Acos(cosWanted);
                 // Turning bc about bc×ba by +δ closes the angle by δ. A straight (or fully folded) limb has no plane
                 // of its own: any axis perpendicular to bc then changes the angle by |δ| the right way; take the
-                // hint's plane so the twist below has little to do.
+                // hint's plane, turning the end away from the hint so that the middle joint ends on the hint's side
+                // and the twist below has little to do (bc×hint turned it toward the hint: a half turn of twist).
                 if (normal.LengthSquared() < 1e-14f * lab * lab * lbc * lbc)
                 {
-                    normal = hasHint ? Vector3.Cross(bc, hint - b) : Vector3.Zero;
+                    normal = hasHint ? Vector3.Cross(hint - b, bc) : Vector3.Zero;
                     if (normal.LengthSquared() < 1e-14f * lbc * lbc) normal = Vector3.Cross(bc, Math.Abs(bc.Y) < 0.9f * lbc ? Vector3.UnitY : Vector3.UnitX);
                 }
                 if (Vectors.IsFinite(delta) && Math.Abs(delta) > 0f)
