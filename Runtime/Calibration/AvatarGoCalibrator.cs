@@ -433,6 +433,8 @@ namespace AvatarGo
             var settings = new PipelineSettings { Offsets = m_Offsets };
             settings.ShrugReleaseSeconds = m_ShrugReleaseSeconds >= 0f && m_ShrugReleaseSeconds <= 10f ? m_ShrugReleaseSeconds : FullBodyIk.DefaultShrugReleaseSeconds;
             settings.Calibration.Proportions.Mode = m_ScaleMode;
+            // Unity's Animator leaves the joints between the humanoid spine bones as they are bound: so does the core's pose.
+            settings.Calibration.SpineJointsAsBound = m_Driver == DriverKind.AnimatorIK && m_Animator != null;
             if (_fingers != null) _fingers.ConfigureHands(settings);
             try
             {

@@ -29,6 +29,18 @@ namespace AvatarGo.Core
         /// </summary>
         public bool AcceptTriggerFromAnyDevice { get; set; }
 
+        /// <summary>
+        /// Keep the avatar's joints between the hips and the head that are no humanoid bone (UE5's <c>spine_02</c> and
+        /// <c>neck_02</c>, the CMU conversion's <c>Neck1</c>) in their bind rotation in the calibration pose, instead of standing
+        /// them up with the spine bones around them (<see cref="TPoser"/>). For an avatar whose bones Unity's Animator writes
+        /// (the Animator IK driver sets the humanoid bones' local rotations only, and humanoid animation does not move such
+        /// joints, so they stay as bound), so that the pose the core solves has them where Unity has them; otherwise the spine bones' local rotations copied
+        /// into Unity would sit on differently turned joints and move the neck and head off the solve. False (the default)
+        /// when the core's pose is written whole (the Transforms driver) or compared with a simulated wearer, whose T-pose
+        /// stands them up too. The proportion fit and the refinement exercise measure the stood-up T-pose either way.
+        /// </summary>
+        public bool SpineJointsAsBound { get; set; }
+
         private ProportionSettings _proportions = new ProportionSettings();
 
         /// <summary>

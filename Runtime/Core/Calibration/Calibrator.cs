@@ -186,7 +186,7 @@ namespace AvatarGo.Core
 
             // Scale: the wearer's eye height over the avatar's; with fitted proportions, legs and arms to the measurement.
             var unscaled = new SkeletonPose(_avatar.Skeleton);
-            TPoser.Apply(_avatar, unscaled, RigidPose.Identity);
+            TPoser.Apply(_avatar, unscaled, RigidPose.Identity, null, _settings.SpineJointsAsBound);
             float avatarEye = TPoser.EyePosition(_avatar, unscaled, System.Numerics.Quaternion.Identity).Y;
             float scale = chosen.EyeHeight / avatarEye;
             _tposeFeatures = Features(chosen.Floor);
@@ -215,7 +215,7 @@ namespace AvatarGo.Core
         {
             ScaledAvatar = proportions.IsUniform ? new HumanoidMap(_avatar.Skeleton.Scaled(scale), _avatar.Pairs()) : proportions.Apply(_avatar, scale);
             AvatarPose = new SkeletonPose(ScaledAvatar.Skeleton);
-            TPoser.Apply(ScaledAvatar, AvatarPose, placement);
+            TPoser.Apply(ScaledAvatar, AvatarPose, placement, null, _settings.SpineJointsAsBound);
         }
 
         // ---- Step 2: exact offsets -----------------------------------------------------------------------

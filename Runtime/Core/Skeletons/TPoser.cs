@@ -62,7 +62,17 @@ namespace AvatarGo.Core
         /// first frame of its motion, so that its T-pose and its motion share those twists.
         /// </summary>
         /// <exception cref="ArgumentException">The rig lacks a required humanoid bone, or the reference has the wrong length.</exception>
-        public static void Apply(HumanoidMap map, SkeletonPose pose, RigidPose placement, RigidPose[] twistReference)
+        public static void Apply(HumanoidMap map, SkeletonPose pose, RigidPose placement, RigidPose[] twistReference) =>
+            Apply(map, pose, placement, twistReference, false);
+
+        /// <summary>
+        /// As <see cref="Apply(HumanoidMap, SkeletonPose, RigidPose, RigidPose[])"/>; with <paramref name="spineJointsAsBound"/>
+        /// the joints between the hips and the head that are no humanoid bone keep their reference rotation (the rest pose's:
+        /// an avatar's bind pose) instead of standing up with the spine bones around them, as Unity's Animator leaves them
+        /// (<see cref="CalibrationSettings.SpineJointsAsBound"/>).
+        /// </summary>
+        /// <exception cref="ArgumentException">The rig lacks a required humanoid bone, or the reference has the wrong length.</exception>
+        public static void Apply(HumanoidMap map, SkeletonPose pose, RigidPose placement, RigidPose[] twistReference, bool spineJointsAsBound)
         {
             if (map == null) throw new ArgumentNullException(nameof(map));
             if (pose == null || pose.Skeleton != map.Skeleton) throw new ArgumentException("The pose must belong to the map's skeleton.", nameof(pose));
@@ -87,7 +97,7 @@ namespace AvatarGo.Core
             int headJoint = map[HumanoidBone.Head], hipsJoint = map[HumanoidBone.Hips];
             // (Only on the way down from the head to the hips: with the hips mapped by hand beside the spine, the walk would
             // pass them and mark the joints above, a floor root among them.)
-            if (s.IsAncestorOrSelf(hipsJoint, headJoint))
+            if (!spineJointsAsBound && s.IsAncestorOrSelf(hipsJoint, headJoint))
                 for (int j = s.GetParent(headJoint); j >= 0 && j != hipsJoint; j = s.GetParent(j))
                     if (roles[j] == BoneRole.Other) roles[j] = BoneRole.SpinePath;
 
