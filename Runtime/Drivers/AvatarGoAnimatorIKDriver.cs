@@ -70,6 +70,7 @@ namespace AvatarGo
         private readonly EffectorRotationOffsets _effectors = new EffectorRotationOffsets();
         private readonly CoreQuaternion[] _goalSet = new CoreQuaternion[4]; // tracking space, the last pass's
         private readonly bool[] _hasGoalSet = new bool[4];
+        private readonly float[] _rotationWeightSet = new float[4];
         private readonly Transform[] _goalBones = new Transform[4];
         private Transform _hips;
         private RigidPose _bodySet;
@@ -159,6 +160,7 @@ namespace AvatarGo
                 _animator.SetIKRotation(unityGoal, world.Rotation.ToUnity());
                 _animator.SetIKPositionWeight(unityGoal, weight);
                 _animator.SetIKRotationWeight(unityGoal, weight);
+                _rotationWeightSet[g] = weight;
                 var hint = (AvatarIKHint)g;
                 _animator.SetIKHintPosition(hint, space.ToWorld(_targets.Hint((IkHint)g)).ToUnity());
                 _animator.SetIKHintPositionWeight(hint, m_HintWeight);
@@ -177,7 +179,7 @@ namespace AvatarGo
             if (_hasBodySet) _body.Observe(_bodySet, space.ToTracking(_hips.GetWorldPose()));
             for (int g = 0; g < 4; g++)
                 if (_hasGoalSet[g] && !_effectors.IsKnown((IkGoal)g))
-                    _effectors.Observe((IkGoal)g, _goalSet[g], space.ToTracking(_goalBones[g].GetWorldPose()).Rotation);
+                    _effectors.Observe((IkGoal)g, _goalSet[g], _rotationWeightSet[g], space.ToTracking(_goalBones[g].GetWorldPose()).Rotation);
         }
 
         private void Retarget(HumanoidMap avatar)

@@ -39,8 +39,16 @@ namespace AvatarGo.Core
         /// produced. A measurement that disagrees with the first by more than <see cref="ConsistencyDegrees"/> starts the
         /// count again from it. Non-finite rotations are ignored. Returns true when the offset is known after it.
         /// </summary>
-        public bool Observe(IkGoal goal, Quaternion goalSet, Quaternion boneResult)
+        public bool Observe(IkGoal goal, Quaternion goalSet, Quaternion boneResult) => Observe(goal, goalSet, 1f, boneResult);
+
+        /// <summary>
+        /// As <see cref="Observe(IkGoal, Quaternion, Quaternion)"/>, for a goal rotation set with <paramref name="rotationWeight"/>:
+        /// a frame set with less than full weight is ignored (the bone's rotation is then a blend with where the limb's own
+        /// pose carried it, not the goal's effector frame; found in review: a driver at half weight measured that blend).
+        /// </summary>
+        public bool Observe(IkGoal goal, Quaternion goalSet, float rotationWeight, Quaternion boneResult)
         {
+            if (!(rotationWeight >= 1f)) return IsKnown(goal);
             int g = Index(goal);
             if (_known[g]) return true;
             if (!Rotations.IsUnit(goalSet) || !Rotations.IsUnit(boneResult)) return false;

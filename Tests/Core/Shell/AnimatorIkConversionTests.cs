@@ -135,6 +135,27 @@ namespace AvatarGo.Core.Tests
             Assert.Throws<ArgumentOutOfRangeException>(() => offsets.IsKnown((IkGoal)4));
         }
 
+        /// <summary>
+        /// Frames whose goal rotation was set with less than full weight are not measured: the bone's rotation is then a blend
+        /// with where the limb's own pose carried it (found in review: a driver at half weight measured that blend). Three
+        /// half-weight frames of a wrong relation leave the offset unknown; three at full weight make it known.
+        /// </summary>
+        [Test]
+        public void EffectorFramesAreMeasuredOnlyAtFullWeight()
+        {
+            var offsets = new EffectorRotationOffsets();
+            Quaternion c = Rotations.AngleAxis(70f, Vector3.Normalize(new Vector3(1, 2, 0.5f)));
+            Quaternion set = Rotations.AngleAxis(20f, Vector3.UnitY);
+            Quaternion blended = Quaternion.Slerp(set * Quaternion.Conjugate(c), Quaternion.Identity, 0.5f);
+            for (int k = 0; k < EffectorRotationOffsets.SamplesNeeded + 1; k++)
+                Assert.That(offsets.Observe(IkGoal.LeftHand, set, 0.5f, blended), Is.False, "half weight: not measured");
+            Assert.That(offsets.IsKnown(IkGoal.LeftHand), Is.False);
+            for (int k = 0; k < EffectorRotationOffsets.SamplesNeeded; k++) offsets.Observe(IkGoal.LeftHand, set, 1f, set * Quaternion.Conjugate(c));
+            Assert.That(offsets.IsKnown(IkGoal.LeftHand), Is.True);
+            Approx.Near(c, offsets.EffectorInBone(IkGoal.LeftHand), 1e-4f, "the full-weight frames' relation");
+            Assert.That(offsets.Observe(IkGoal.RightHand, set, float.NaN, set), Is.False, "a weight that is not a number measures nothing");
+        }
+
         // The whole IK pass through a stand-in for Unity: the body compensated, the goals turned into effector frames (Unity
         // turns them back), the hints, and the spine, head and clavicles by local rotation; each limb then solved to its goal.
         [TestCase("mocapbank_30fps.bvh")]
