@@ -266,7 +266,7 @@ namespace AvatarGo
                 Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: the saved calibration {path} cannot be read ({e.Message}); calibrate again.", this);
                 return false;
             }
-            if (!AvatarGoFiles.ProfileFits(profile, Binding.Map, out string reason))
+            if (!AvatarGoFiles.ProfileFits(profile, Binding.Map, SpineJointsAsBound, out string reason))
             {
                 Debug.Log($"{nameof(AvatarGoCalibrator)}: the saved calibration {path} is not for this avatar ({reason}).", this);
                 return false;
@@ -433,8 +433,7 @@ namespace AvatarGo
             var settings = new PipelineSettings { Offsets = m_Offsets };
             settings.ShrugReleaseSeconds = m_ShrugReleaseSeconds >= 0f && m_ShrugReleaseSeconds <= 10f ? m_ShrugReleaseSeconds : FullBodyIk.DefaultShrugReleaseSeconds;
             settings.Calibration.Proportions.Mode = m_ScaleMode;
-            // Unity's Animator leaves the joints between the humanoid spine bones as they are bound: so does the core's pose.
-            settings.Calibration.SpineJointsAsBound = m_Driver == DriverKind.AnimatorIK && m_Animator != null;
+            settings.Calibration.SpineJointsAsBound = SpineJointsAsBound;
             if (_fingers != null) _fingers.ConfigureHands(settings);
             try
             {
@@ -531,6 +530,10 @@ namespace AvatarGo
             if (_display == null || _failed) return;
             _display.UpdateMirror(_hasMirror, _mirror);
         }
+
+        // Unity's Animator leaves the joints between the humanoid spine bones as they are bound: so does the core's pose when
+        // the Animator IK driver writes the bones (CalibrationSettings.SpineJointsAsBound).
+        private bool SpineJointsAsBound => m_Driver == DriverKind.AnimatorIK && m_Animator != null;
 
         private void AddDriver()
         {

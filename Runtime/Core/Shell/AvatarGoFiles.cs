@@ -50,12 +50,19 @@ namespace AvatarGo.Core
         /// own units, before scaling) is this avatar's within <see cref="EyeHeightTolerance"/>. Otherwise false with the reason:
         /// its offsets belong to another avatar's joints.
         /// </summary>
-        public static bool ProfileFits(CalibrationProfile profile, HumanoidMap avatar, out string reason)
+        public static bool ProfileFits(CalibrationProfile profile, HumanoidMap avatar, out string reason) => ProfileFits(profile, avatar, false, out reason);
+
+        /// <summary>
+        /// As <see cref="ProfileFits(CalibrationProfile, HumanoidMap, out string)"/>, for a calibration whose avatar T-pose kept
+        /// the joints between the spine bones as bound (<see cref="CalibrationSettings.SpineJointsAsBound"/>, the Animator IK
+        /// driver's): the eye height is measured in the same T-pose the calibration measured it in.
+        /// </summary>
+        public static bool ProfileFits(CalibrationProfile profile, HumanoidMap avatar, bool spineJointsAsBound, out string reason)
         {
             if (profile == null) throw new ArgumentNullException(nameof(profile));
             if (avatar == null) throw new ArgumentNullException(nameof(avatar));
             var pose = new SkeletonPose(avatar.Skeleton);
-            TPoser.Apply(avatar, pose, RigidPose.Identity);
+            TPoser.Apply(avatar, pose, RigidPose.Identity, null, spineJointsAsBound);
             float eye = TPoser.EyePosition(avatar, pose, Quaternion.Identity).Y;
             if (Math.Abs(eye - profile.AvatarEyeHeight) <= EyeHeightTolerance)
             {

@@ -36,15 +36,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void JointsBetweenTheSpineBonesStayAsBoundUnderTheAnimator()
         {
-            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
-            BvhClip inserted = Topology.WithJointsAbove(clip, true, ("Chest2", "ChestMid", 0.5f), ("Neck", "ChestTop", 0.5f));
-            // Bound with the spine curved at those joints (as UE5's is), the motion unchanged: their local frames turned 15°
-            // and -12° about the hip line, so the rest bends there.
-            var axes = new Quaternion[inserted.Skeleton.JointCount];
-            for (int j = 0; j < axes.Length; j++) axes[j] = Quaternion.Identity;
-            axes[inserted.Skeleton.IndexOf("ChestMid")] = Rotations.AngleAxis(15f, Vector3.UnitX);
-            axes[inserted.Skeleton.IndexOf("ChestTop")] = Rotations.AngleAxis(-12f, Vector3.UnitX);
-            BvhClip vertebrae = BvhRebaser.Rebase(inserted, axes);
+            BvhClip vertebrae = WithCurvedSpineJoints();
             var asBound = new PipelineSettings();
             asBound.Calibration.SpineJointsAsBound = true;
             var (frames, worstEnd, worstMiddle, worstSpine) = Reproduce(vertebrae, asBound);
@@ -55,6 +47,22 @@ namespace AvatarGo.Core.Tests
             Assert.That(worstMiddle, Is.LessThanOrEqualTo(0.001f), "knees and elbows (m)");
             Assert.That(worstSpine, Is.LessThanOrEqualTo(1e-5f), "the spine, head and clavicles (m)");
             Assert.That(stoodUp, Is.GreaterThan(0.005f), "stood up in the core's pose only, they move the head off (m): what the setting is for");
+        }
+
+        /// <summary>
+        /// MocapBank with a joint that is no humanoid bone halfway between Chest2 and Neck and one between Chest and Chest2,
+        /// turning in the motion, bound with the spine curved at them (as UE5's is), the motion unchanged: their local frames
+        /// turned 15° and -12° about the hip line, so the rest bends there.
+        /// </summary>
+        internal static BvhClip WithCurvedSpineJoints()
+        {
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            BvhClip inserted = Topology.WithJointsAbove(clip, true, ("Chest2", "ChestMid", 0.5f), ("Neck", "ChestTop", 0.5f));
+            var axes = new Quaternion[inserted.Skeleton.JointCount];
+            for (int j = 0; j < axes.Length; j++) axes[j] = Quaternion.Identity;
+            axes[inserted.Skeleton.IndexOf("ChestMid")] = Rotations.AngleAxis(15f, Vector3.UnitX);
+            axes[inserted.Skeleton.IndexOf("ChestTop")] = Rotations.AngleAxis(-12f, Vector3.UnitX);
+            return BvhRebaser.Rebase(inserted, axes);
         }
 
         // Replays the clip's session through the pipeline and, every calibrated frame, applies the targets as the driver's

@@ -152,5 +152,24 @@ namespace AvatarGo.Core.Tests
             Assert.That(AvatarGoFiles.ProfileFits(p.Profile, other, out reason), Is.False);
             Assert.That(reason, Does.Contain("another avatar").Or.Contain("eyes at"));
         }
+
+        /// <summary>
+        /// A profile calibrated with the joints between the spine bones kept as bound (the Animator IK driver's) fits the same
+        /// avatar again when asked the same way (found in review: the check measured the stood-up T-pose, so on a rig whose
+        /// bind curves the spine at such joints the saved calibration was refused at every start), and not the other way.
+        /// </summary>
+        [Test]
+        public void AProfileCalibratedWithTheSpineJointsAsBoundFitsTheSameAvatar()
+        {
+            string session = Sessions.Simulate(AnimatorIkTargetsTests.WithCurvedSpineJoints());
+            var settings = new PipelineSettings();
+            settings.Calibration.SpineJointsAsBound = true;
+            SelfAvatarPipeline p = Sessions.Replay(session, settings);
+            Assume.That(p.Profile, Is.Not.Null, p.LastCalibrationStep.Message);
+            HumanoidMap same;
+            using (SessionReader r = Sessions.Read(session)) same = r.Header.TruthHumanoid;
+            Assert.That(AvatarGoFiles.ProfileFits(p.Profile, same, true, out string reason), Is.True, reason);
+            Assert.That(AvatarGoFiles.ProfileFits(p.Profile, same, false, out reason), Is.False, "the stood-up T-pose's eyes are elsewhere");
+        }
     }
 }
