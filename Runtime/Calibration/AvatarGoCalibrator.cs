@@ -129,11 +129,12 @@ namespace AvatarGo
         private SelfAvatarPipeline _pipeline;
         private SessionFrame _frame;
         private int _headerVersion = int.MinValue;
+        private AvatarGoTrackingSource _builtFor;     // the source the pipeline was made for
         private CalibrationDisplay _display;
         private AvatarGoFingers _fingers;
         private bool _failed, _resetByUser, _hasFrame;
         private MirrorPlane _mirror;
-        private bool _hasMirror;
+        private bool _hasMirror, _mirrorFailed;
         private ProportionedBones _bones;
 
         /// <summary>Where the devices come from.</summary>
@@ -206,12 +207,22 @@ namespace AvatarGo
         /// <summary>Raised every frame after the pipeline ran, with the frame it was fed (AvatarGoRecorder records it).</summary>
         public event Action<SessionFrame> FrameRead
         {
-            add { if (value != null) _frameRead.Add(value); }
-            remove { _frameRead.Remove(value); }
+            add
+            {
+                if (value == null) return;
+                _frameRead.Add(value);
+                _frameReadNow = _frameRead.ToArray();
+            }
+            remove
+            {
+                if (_frameRead.Remove(value)) _frameReadNow = _frameRead.ToArray();
+            }
         }
 
-        // The listeners of FrameRead, kept as a list so that each is called on its own without allocating per frame.
+        // The listeners of FrameRead, kept as a list so that each is called on its own; the frame is dispatched to a copy made
+        // when they change (not per frame), so that a listener that unsubscribes while called does not make the next miss it.
         private readonly List<Action<SessionFrame>> _frameRead = new List<Action<SessionFrame>>(2);
+        private Action<SessionFrame>[] _frameReadNow = Array.Empty<Action<SessionFrame>>();
 
         /// <summary>The T-pose step succeeded.</summary>
         public UnityEvent OnTPoseAccepted => m_OnTPoseAccepted;
@@ -291,7 +302,8 @@ namespace AvatarGo
                 CalibrationProfileStore.Save(_pipeline.Profile, ProfilePath);
                 return true;
             }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            // ArgumentException: the store refuses a profile it could not load back (proportions beyond its limits).
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException)
             {
                 Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: the calibration could not be saved to {ProfilePath} ({e.Message}).", this);
                 return false;
@@ -376,7 +388,8 @@ namespace AvatarGo
             }
             SessionHeader header = m_Source != null ? m_Source.Header : null;
             if (header == null) return; // no devices yet
-            if (_pipeline == null || m_Source.HeaderVersion != _headerVersion) Rebuild(header);
+            // Another source (the Source property set at run time) may report the same header version: the source itself is compared too.
+            if (_pipeline == null || m_Source.HeaderVersion != _headerVersion || !ReferenceEquals(m_Source, _builtFor)) Rebuild(header);
             if (_failed) return;
             CalibrationStep step;
             RefinementFlowEvents refinement;
@@ -405,11 +418,12 @@ namespace AvatarGo
             AnnounceRefinement(refinement);
             ShowFrame();
             // Each listener on its own: one that throws is logged and neither stops the others nor escapes Update.
-            for (int i = 0; i < _frameRead.Count; i++)
+            Action<SessionFrame>[] listeners = _frameReadNow;
+            for (int i = 0; i < listeners.Length; i++)
             {
                 try
                 {
-                    _frameRead[i](_frame);
+                    listeners[i](_frame);
                 }
                 catch (Exception e)
                 {
@@ -446,6 +460,7 @@ namespace AvatarGo
             }
             _frame = new SessionFrame(header);
             _headerVersion = m_Source.HeaderVersion;
+            _builtFor = m_Source;
             _display.SetDeviceCount(header.Devices.Count);
             double now = _hasFrame ? _frame.Time : 0.0;
             if (old != null && old.State == CalibrationState.Calibrated && old.Profile != null)
@@ -527,8 +542,19 @@ namespace AvatarGo
         // Before rendering, once every bone is final: the mirrored copy takes the avatar's pose.
         private void UpdateMirror()
         {
-            if (_display == null || _failed) return;
-            _display.UpdateMirror(_hasMirror, _mirror);
+            if (_display == null || _failed || _mirrorFailed) return;
+            // Application.onBeforeRender calls its subscribers in turn without a guard: an exception here would skip the
+            // later ones (the XR Interaction Toolkit's among them), so it is logged once and the mirror given up.
+            try
+            {
+                _display.UpdateMirror(_hasMirror, _mirror);
+            }
+            catch (Exception e)
+            {
+                Debug.LogException(e, this);
+                Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: the calibration mirror failed (see the exception above) and is no longer shown.", this);
+                _mirrorFailed = true;
+            }
         }
 
         // Unity's Animator leaves the joints between the humanoid spine bones as they are bound: so does the core's pose when

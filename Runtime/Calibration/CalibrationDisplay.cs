@@ -113,6 +113,13 @@ namespace AvatarGo
                 if (_mirrorHolder != null) _mirrorHolder.SetActive(false);
                 return;
             }
+            if (_binding.Root == null) return; // the avatar is gone (the calibrator fails on its next Update)
+            if (_mirror != null && (_mirrorHolder == null || _mirror.Root == null))
+            {
+                // Destroyed with the scene it was made in (the calibrator lives on in another): made again below.
+                _mirror = null;
+                _mirrorHolder = null;
+            }
             if (_mirror == null && !CreateMirror()) return;
             _mirror.CopyLocalPoses(_binding);
             Transform root = _binding.Root, copy = _mirror.Root;

@@ -109,7 +109,8 @@ namespace AvatarGo
             pipeline.Settings.RightHand.Grip = m_RightGrip;
             HumanoidBinding binding = m_Calibrator.Binding;
             SkeletonPose pose = pipeline.Pose;
-            if (binding == null || pose == null || pipeline.State != CalibrationState.Calibrated) return;
+            // binding.Root == null: the avatar was destroyed (the calibrator stops, but its pipeline keeps its calibration).
+            if (binding == null || binding.Root == null || pose == null || pipeline.State != CalibrationState.Calibrated) return;
             if (!ReferenceEquals(binding, _binding))
             {
                 _binding = binding;

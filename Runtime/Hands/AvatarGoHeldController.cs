@@ -11,8 +11,9 @@ namespace AvatarGo
     /// </summary>
     /// <remarks>
     /// Once calibrated, the model is re-parented under <see cref="ModelParent"/> (by default the tracking source's origin)
-    /// so that the rig's own per-frame pose updates no longer move it, and put back where it was when this component is
-    /// disabled. Its offset from the tracked device is measured on the first calibrated frame the controller is tracked and
+    /// so that the rig's own per-frame pose updates no longer move it, and put back under its own parent at its own local
+    /// pose (following its device again) when this component is disabled, when the calibration is reset or new devices come,
+    /// and while the calibrator is stopped. Its offset from the tracked device is measured on the first calibrated frame the controller is tracked and
     /// reached (the model as the application placed it, relative to the device), or set to none. Runs in <c>LateUpdate</c>
     /// (<see cref="AvatarGoExecutionOrder.HeldController"/>). Allocation-free per frame.
     /// </remarks>
@@ -37,6 +38,7 @@ namespace AvatarGo
         private bool m_MeasureOffset = true;
 
         private Transform _originalParent;
+        private RigidPose _originalLocal = RigidPose.Identity; // the model's local pose under its own parent, before it was moved
         private bool _moved, _hasOffset, _failed;
         private RigidPose _offset = RigidPose.Identity;
 
@@ -57,12 +59,21 @@ namespace AvatarGo
 
         private void OnDisable()
         {
-            // Unity refuses to re-parent while a parent is being activated or deactivated (the rig or scene going away):
-            // then the model stays where it is, under the tracking origin.
-            if (_moved && m_Model != null && m_Model.gameObject.activeInHierarchy && (_originalParent == null || _originalParent.gameObject.activeInHierarchy))
-                m_Model.SetParent(_originalParent, true);
-            _moved = false;
+            GiveBack();
             _hasOffset = false;
+        }
+
+        // The model back under its own parent at its own local pose (under the controller's tracked transform, where it was:
+        // not where it was last drawn, which may be in the hand). Unity refuses to re-parent while a parent is being
+        // activated or deactivated (the rig or scene going away): then the model stays where it is, under the tracking origin.
+        private void GiveBack()
+        {
+            if (_moved && m_Model != null && m_Model.gameObject.activeInHierarchy && (_originalParent == null || _originalParent.gameObject.activeInHierarchy))
+            {
+                m_Model.SetParent(_originalParent, false);
+                m_Model.SetLocalPose(_originalLocal);
+            }
+            _moved = false;
         }
 
         private void LateUpdate()
@@ -70,7 +81,11 @@ namespace AvatarGo
             if (_failed || m_Model == null) return;
             if (!SetupErrors.FindCalibrator(this, ref m_Calibrator, ref _failed)) return;
             SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
-            if (pipeline == null || pipeline.State != CalibrationState.Calibrated) return;
+            if (pipeline == null || pipeline.State != CalibrationState.Calibrated || !m_Calibrator.isActiveAndEnabled)
+            {
+                GiveBack(); // not calibrated (a reset, new devices) or the calibrator stopped: the model follows its device again
+                return;
+            }
             HandState hand = pipeline.Hand(m_Hand);
             TrackingSpace space = m_Calibrator.TrackingSpace;
             RigidPose controller = space.ToWorld(hand.ControllerPose);
@@ -83,6 +98,7 @@ namespace AvatarGo
             if (!_moved)
             {
                 _originalParent = m_Model.parent;
+                _originalLocal = m_Model.GetLocalPose();
                 Transform parent = m_ModelParent != null ? m_ModelParent : m_Calibrator.Source != null ? m_Calibrator.Source.TrackingSpaceOrigin : null;
                 m_Model.SetParent(parent, true);
                 _moved = true;

@@ -46,6 +46,7 @@ namespace AvatarGo
         private SessionFrame _frame;
         private int _frameHeaderVersion = int.MinValue;
         private int _recordingHeaderVersion;
+        private AvatarGoTrackingSource _recordingSource, _frameSource; // the sources the recording and the own frame were made for
         private AvatarGoCalibrator _subscribed;
         private bool _toldWaiting;
 
@@ -93,7 +94,8 @@ namespace AvatarGo
                 return false;
             }
             _toldWaiting = false;
-            string path = Path.Combine(AvatarGoFiles.Folder(Application.persistentDataPath), m_Folder ?? "", AvatarGoFiles.RecordingFileName(m_FilePrefix, DateTime.Now));
+            string folder = Path.Combine(AvatarGoFiles.Folder(Application.persistentDataPath), m_Folder ?? "");
+            string path = AvatarGoFiles.NewRecordingPath(folder, m_FilePrefix, DateTime.Now, File.Exists);
             try
             {
                 _recording = new SessionFileRecording(path, header);
@@ -105,6 +107,7 @@ namespace AvatarGo
                 return false;
             }
             _recordingHeaderVersion = source.HeaderVersion;
+            _recordingSource = source;
             FramesRecorded = 0;
             LastRecordingPath = path;
             Debug.Log($"{nameof(AvatarGoRecorder)}: recording {header.Devices.Count} devices to {path}", this);
@@ -155,10 +158,11 @@ namespace AvatarGo
             // No calibrator: this component reads the source itself.
             SessionHeader header = m_Source.Header;
             if (header == null) return;
-            if (_frame == null || _frameHeaderVersion != m_Source.HeaderVersion)
+            if (_frame == null || _frameHeaderVersion != m_Source.HeaderVersion || !ReferenceEquals(m_Source, _frameSource))
             {
                 _frame = new SessionFrame(header);
                 _frameHeaderVersion = m_Source.HeaderVersion;
+                _frameSource = m_Source;
             }
             m_Source.Read(_frame);
             Record(_frame);
@@ -171,7 +175,8 @@ namespace AvatarGo
             if (m_Record && !IsRecording) StartRecording();
             if (!IsRecording) return;
             AvatarGoTrackingSource source = SourceRecorded();
-            if (source == null || source.HeaderVersion != _recordingHeaderVersion || frame.Samples.Length != _recording.Header.Devices.Count)
+            // Another source set at run time may report the same header version: the source itself is compared too.
+            if (source == null || !ReferenceEquals(source, _recordingSource) || source.HeaderVersion != _recordingHeaderVersion || frame.Samples.Length != _recording.Header.Devices.Count)
             {
                 Debug.LogWarning($"{nameof(AvatarGoRecorder)}: the source's devices changed; the recording is stopped (a session has one device list). Start a new one to record the new devices.", this);
                 StopRecording();

@@ -36,6 +36,23 @@ namespace AvatarGo.Core
             Sanitize(prefix, "session") + "-" + time.ToString("yyyyMMdd-HHmmss", CultureInfo.InvariantCulture) + SessionExtension;
 
         /// <summary>
+        /// The path of a new recording in <paramref name="folder"/>: <see cref="RecordingFileName"/>, or with "-2", "-3"… before
+        /// the extension while <paramref name="exists"/> says the name is taken (a second recording started within the same
+        /// second would otherwise replace the first when it completes).
+        /// </summary>
+        public static string NewRecordingPath(string folder, string prefix, DateTime time, Func<string, bool> exists)
+        {
+            if (folder == null) throw new ArgumentNullException(nameof(folder));
+            if (exists == null) throw new ArgumentNullException(nameof(exists));
+            string name = RecordingFileName(prefix, time);
+            string path = Path.Combine(folder, name);
+            string stem = name.Substring(0, name.Length - SessionExtension.Length);
+            for (int take = 2; exists(path); take++)
+                path = Path.Combine(folder, stem + "-" + take.ToString(CultureInfo.InvariantCulture) + SessionExtension);
+            return path;
+        }
+
+        /// <summary>
         /// A configured path as a full path: an absolute path as it is, a relative one under <paramref name="baseFolder"/>;
         /// null for an empty path.
         /// </summary>

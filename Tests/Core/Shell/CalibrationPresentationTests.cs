@@ -136,6 +136,10 @@ namespace AvatarGo.Core.Tests
             Assert.That(AvatarGoFiles.ProfileFileName("Ready Player Me/ä 1"), Is.EqualTo("calibration-Ready_Player_Me___1.json"));
             Assert.That(AvatarGoFiles.ProfileFileName(""), Is.EqualTo("calibration-avatar.json"));
             Assert.That(AvatarGoFiles.RecordingFileName(null, new DateTime(2025, 1, 2, 3, 4, 5)), Is.EqualTo("session-20250102-030405.agsession"));
+            // A second recording within the same second takes the next free name (found in review: it replaced the first).
+            var taken = new System.Collections.Generic.HashSet<string> { Path.Combine("rec", "take-20250102-030405.agsession"), Path.Combine("rec", "take-20250102-030405-2.agsession") };
+            Assert.That(AvatarGoFiles.NewRecordingPath("rec", "take", new DateTime(2025, 1, 2, 3, 4, 5), taken.Contains), Is.EqualTo(Path.Combine("rec", "take-20250102-030405-3.agsession")));
+            Assert.That(AvatarGoFiles.NewRecordingPath("rec", "take", new DateTime(2025, 1, 2, 3, 4, 6), taken.Contains), Is.EqualTo(Path.Combine("rec", "take-20250102-030406.agsession")));
             string data = Path.Combine(Path.GetTempPath(), "data");
             Assert.That(AvatarGoFiles.Folder(data), Is.EqualTo(Path.Combine(data, "AvatarGo")));
             Assert.That(AvatarGoFiles.Resolve("takes/a.agsession", data), Is.EqualTo(Path.GetFullPath(Path.Combine(data, "takes", "a.agsession"))));
