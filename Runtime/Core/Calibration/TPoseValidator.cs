@@ -72,7 +72,9 @@ namespace AvatarGo.Core
         /// With the roles known: the hands at shoulder height (0.75–1.02 × eye height, within 15 cm of each other; else
         /// <see cref="CalibrationError.ArmsNotLevel"/>), the foot trackers within 30 cm of the floor (else
         /// <see cref="CalibrationError.FeetNotOnFloor"/>) and the pelvis tracker at least 25 cm above the feet and 25 cm
-        /// below the HMD (else <see cref="CalibrationError.PelvisNotBetweenHeadAndFeet"/>).
+        /// below the HMD, and horizontally nearer the body's axis (midway between the HMD and the feet) than
+        /// <see cref="PelvisOffAxisOfHandReach"/> of the nearer hand's distance from it (else
+        /// <see cref="CalibrationError.PelvisNotBetweenHeadAndFeet"/>: a tracker held in a hand is not the pelvis).
         /// </summary>
         public CalibrationError CheckLevels(PerRole<int> roles, ReadOnlySpan<WindowAverage> averages, float floor, float eyeHeight, out string detail)
         {
@@ -90,10 +92,31 @@ namespace AvatarGo.Core
                 detail = $"{feetTop - floor:0.00} m above the floor";
                 return CalibrationError.FeetNotOnFloor;
             }
-            float pelvis = averages[roles[DeviceRole.Pelvis]].Position.Y;
-            if (pelvis < feetTop + 0.25f || pelvis > averages[roles[DeviceRole.Head]].Position.Y - 0.25f) return CalibrationError.PelvisNotBetweenHeadAndFeet;
+            Vector3 pelvisAt = averages[roles[DeviceRole.Pelvis]].Position, head = averages[roles[DeviceRole.Head]].Position;
+            float pelvis = pelvisAt.Y;
+            if (pelvis < feetTop + 0.25f || pelvis > head.Y - 0.25f)
+            {
+                detail = $"the waist tracker at {pelvis - floor:0.00} m, the feet's at {feetTop - floor:0.00} m, eyes at {eyeHeight:0.00} m";
+                return CalibrationError.PelvisNotBetweenHeadAndFeet;
+            }
+            // Horizontally: a tracker held out in a hand passes every height check (hands lowered toward the waist).
+            Vector3 axis = 0.5f * (head + 0.5f * (averages[roles[DeviceRole.LeftFoot]].Position + averages[roles[DeviceRole.RightFoot]].Position));
+            float Off(Vector3 p) => new Vector2(p.X - axis.X, p.Z - axis.Z).Length();
+            float pelvisOff = Off(pelvisAt), handOff = Math.Min(Off(averages[roles[DeviceRole.LeftHand]].Position), Off(averages[roles[DeviceRole.RightHand]].Position));
+            if (pelvisOff > PelvisOffAxisOfHandReach * handOff)
+            {
+                detail = $"the waist tracker {pelvisOff:0.00} m from the body's axis, the hands {handOff:0.00} m";
+                return CalibrationError.PelvisNotBetweenHeadAndFeet;
+            }
             return CalibrationError.None;
         }
+
+        /// <summary>
+        /// How far from the body's axis the pelvis tracker may be, as a share of the nearer hand's distance from it in the
+        /// T-pose (0.6): a tracker on the lower back or the hip sits 0.1–0.25 m from it, a hand 0.5–0.9 m (a child's to a tall
+        /// adult's arms spread), so the share keeps both apart at any size.
+        /// </summary>
+        public const float PelvisOffAxisOfHandReach = 0.6f;
 
         /// <summary>
         /// Where the avatar is shown: on the floor between the ankles (the foot trackers' midpoint moved back by

@@ -107,6 +107,17 @@ namespace AvatarGo.Core.Tests
         public void WaistTrackerOnTheChest() => Assert.That(Calibrate(samples: (i, s) => Move(s, DeviceRole.Pelvis, new Vector3(0, 0.55f, 0))),
             Is.EqualTo(CalibrationError.PelvisNotBetweenHeadAndFeet));
 
+        /// <summary>
+        /// A tracker held out in a hand, at waist height, is not the pelvis (found in review: every height check passed, and
+        /// the hips were bound to the hand). 0.5 m beside the body is refused; 0.2 m behind it, as on the lower back, is not.
+        /// </summary>
+        [Test]
+        public void WaistTrackerHeldAwayFromTheBody()
+        {
+            Assert.That(Calibrate(samples: (i, s) => Move(s, DeviceRole.Pelvis, new Vector3(0.5f, 0, 0))), Is.EqualTo(CalibrationError.PelvisNotBetweenHeadAndFeet));
+            Assert.That(Calibrate(samples: (i, s) => Move(s, DeviceRole.Pelvis, new Vector3(0, 0, -0.1f))), Is.EqualTo(CalibrationError.None));
+        }
+
         [Test]
         public void RuntimeRoleContradictsTheBody() => Assert.That(Calibrate(devices: w =>
         {
