@@ -41,5 +41,8 @@ namespace AvatarGo.Core
 
         /// <summary>The step was asked for in the wrong state (for example offsets before identification).</summary>
         WrongState,
+
+        /// <summary>At the walk-in, the HMD is not where the avatar's eyes are: the wearer has not walked into the avatar.</summary>
+        NotInsideAvatar,
     }
 }

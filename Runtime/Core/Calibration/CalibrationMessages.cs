@@ -32,6 +32,7 @@ namespace AvatarGo.Core
                 case CalibrationError.PelvisNotBetweenHeadAndFeet: return "Wear the waist tracker on your lower back.";
                 case CalibrationError.RuntimeRoleMismatch: return "A tracker's assigned role does not match where it is worn: check the tracker roles in your VR runtime.";
                 case CalibrationError.WrongState: return "Start again from the T-pose.";
+                case CalibrationError.NotInsideAvatar: return "Walk into the avatar until your eyes are where its eyes are, then press the trigger again.";
                 default: return error.ToString();
             }
         }

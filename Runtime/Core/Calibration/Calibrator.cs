@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Numerics;
 using System.Text;
 
 namespace AvatarGo.Core
@@ -229,6 +230,12 @@ namespace AvatarGo.Core
                 if (!_averages[d].IsTracked) return Keep(CalibrationError.DeviceNotTracked, _devices[d].ToString());
                 if (!_averages[d].IsStill) return Keep(CalibrationError.DevicesMoving, _devices[d].ToString());
             }
+            // Inside the avatar: the offsets measured now would otherwise take in however far the wearer stands from it.
+            Vector3 hmd = _averages[_deviceByRole[DeviceRole.Head]].Position;
+            Vector3 eyes = TPoser.EyePosition(ScaledAvatar, AvatarPose, Profile.Placement.Rotation);
+            float apart = new Vector2(hmd.X - eyes.X, hmd.Z - eyes.Z).Length();
+            if (apart > MaxWalkInDistance)
+                return Keep(CalibrationError.NotInsideAvatar, FormattableString.Invariant($"the headset is {apart:0.00} m from the avatar's eyes"));
             string note = Remeasure();
             foreach (DeviceRole role in BodyRoles.All)
             {
@@ -239,6 +246,13 @@ namespace AvatarGo.Core
             State = CalibrationState.Calibrated;
             return Advance(now, note);
         }
+
+        /// <summary>
+        /// How far (m) the HMD may be from the avatar's eyes, horizontally, when the walk-in is confirmed (0.3 m): standing in
+        /// the avatar it is within a few centimetres (the HMD sits a little ahead of the eyes); farther, the wearer has not
+        /// walked in, and every offset would take that distance in.
+        /// </summary>
+        public const float MaxWalkInDistance = 0.3f;
 
         // The largest difference between the T-pose's and the walk-in's features for the two to count as the same T-pose.
         private const float SamePoseTolerance = 0.05f;

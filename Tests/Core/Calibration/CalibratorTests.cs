@@ -59,5 +59,30 @@ namespace AvatarGo.Core.Tests
                 }
             }
         }
+
+        /// <summary>
+        /// The walk-in is refused while the wearer stands beside the avatar, not in it (found in review: the offsets took in
+        /// however far away the wearer stood, a metre if need be): 0.5 m to the side is refused with the distance named, and
+        /// the calibration then completes once the wearer steps in (0.1 m off, as a wearer lines up by eye).
+        /// </summary>
+        [Test]
+        public void TheWalkInIsRefusedUntilTheWearerIsInsideTheAvatar()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 210);
+            var calibrator = new Calibrator(wearer.Devices, wearer.Map);
+            wearer.StandInTPose(new RigidPose(new System.Numerics.Vector3(0.4f, 0, -0.8f), Rotations.AngleAxis(30f, System.Numerics.Vector3.UnitY)));
+            double t = 0;
+            wearer.HoldAndPress(calibrator, ref t, 0.002f, 0.2f);
+            Assume.That(calibrator.State, Is.EqualTo(CalibrationState.WalkIn), calibrator.LastStep.Message);
+            RigidPose placement = calibrator.Profile.Placement;
+            wearer.StandInTPose(placement * new RigidPose(new System.Numerics.Vector3(0.5f, 0, 0), System.Numerics.Quaternion.Identity));
+            wearer.HoldAndPress(calibrator, ref t, 0.002f, 0.2f);
+            Assert.That(calibrator.State, Is.EqualTo(CalibrationState.WalkIn), "still walking in");
+            Assert.That(calibrator.LastStep.Error, Is.EqualTo(CalibrationError.NotInsideAvatar));
+            Assert.That(calibrator.LastStep.Message, Does.Contain("m from the avatar's eyes"));
+            wearer.StandInTPose(placement * new RigidPose(new System.Numerics.Vector3(0.1f, 0, 0), System.Numerics.Quaternion.Identity));
+            wearer.HoldAndPress(calibrator, ref t, 0.002f, 0.2f);
+            Assert.That(calibrator.State, Is.EqualTo(CalibrationState.Calibrated), calibrator.LastStep.Message);
+        }
     }
 }

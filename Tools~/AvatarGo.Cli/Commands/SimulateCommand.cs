@@ -24,7 +24,8 @@ public sealed class SimulateCommand : ICommand
           --rate HZ           session frame rate (default 90)
           --noise-mm MM       position noise, standard deviation per coordinate (default 1)
           --noise-deg DEG     rotation noise, standard deviation (default 0.1)
-          --misalign-mm MM    the wearer ends the walk-in MM to the avatar's right (default 0)
+          --misalign-mm MM    the wearer ends the walk-in MM to the avatar's right (default 0; beyond 300 the
+                              calibration refuses the walk-in: the wearer is not inside the avatar)
           --misalign-deg DEG  and turned by DEG (default 0)
           --controller NAME   the controller held in the palm: a profile of Runtime/ControllerProfiles
                               (default vive-wand) or none for a generic 2 cm handle; evaluate with the same
