@@ -31,7 +31,7 @@ namespace AvatarGo.Simulation
             var simulator = new SessionSimulator(clip, options ?? new SimulationOptions(), wearer);
             string folder = Path.GetDirectoryName(Path.GetFullPath(path));
             if (!string.IsNullOrEmpty(folder)) Directory.CreateDirectory(folder);
-            using (SessionWriter writer = SessionWriter.Create(path, simulator.CreateHeader())) simulator.Run(writer);
+            SessionWriter.WriteFile(path, simulator.CreateHeader(), writer => simulator.Run(writer)); // whole or not at all
             return simulator.Wearer;
         }
     }

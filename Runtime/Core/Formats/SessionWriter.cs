@@ -70,6 +70,31 @@ namespace AvatarGo.Core
             }
         }
 
+        /// <summary>
+        /// Writes a whole session file: <paramref name="write"/> writes the frames to a writer made by <see cref="Create"/>,
+        /// and the file appears only if it returns; if it throws, the session is discarded (a file already at the path stays
+        /// as it was) and the exception goes on. A bare <c>using</c> would complete the frames written so far instead.
+        /// </summary>
+        /// <exception cref="ArgumentException">The header holds a serial or joint name the format cannot (nothing is written).</exception>
+        /// <exception cref="IOException">The file cannot be created or written.</exception>
+        public static void WriteFile(string path, SessionHeader header, Action<SessionWriter> write)
+        {
+            if (write == null) throw new ArgumentNullException(nameof(write));
+            using (SessionWriter writer = Create(path, header))
+            {
+                try
+                {
+                    write(writer);
+                    writer.Complete();
+                }
+                catch
+                {
+                    writer.Discard();
+                    throw;
+                }
+            }
+        }
+
         /// <summary>The header written.</summary>
         public SessionHeader Header { get; }
 

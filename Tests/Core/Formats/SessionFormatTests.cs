@@ -166,6 +166,46 @@ namespace AvatarGo.Core.Tests
             finally { File.Delete(path); }
         }
 
+        /// <summary>
+        /// <see cref="SessionWriter.WriteFile"/> writes a session whole or not at all: when the code writing the frames throws
+        /// mid-way, a session already at the path is left as it was, and the exception goes on (found in review: the
+        /// headset-free session was written in a bare using, which completed the frames written so far over the old file).
+        /// </summary>
+        [Test]
+        public void WriteFileKeepsTheOldSessionWhenWritingThrows()
+        {
+            string path = Path.Combine(Path.GetTempPath(), "avatargo-whole-" + Guid.NewGuid().ToString("N") + ".agsession");
+            try
+            {
+                SessionHeader h = Header();
+                void Frames(SessionWriter w, int count, bool fail)
+                {
+                    var f = new SessionFrame(h);
+                    var rng = new Random(3);
+                    for (int i = 0; i < count; i++)
+                    {
+                        Fill(f, i, rng);
+                        w.WriteFrame(f);
+                    }
+                    if (fail) throw new InvalidOperationException("the simulation failed");
+                }
+                SessionWriter.WriteFile(path, h, w => Frames(w, 50, false));
+                string before = File.ReadAllText(path);
+                var e = Assert.Throws<InvalidOperationException>(() => SessionWriter.WriteFile(path, h, w => Frames(w, 20, true)));
+                Assert.That(e.Message, Is.EqualTo("the simulation failed"));
+                Assert.That(File.ReadAllText(path), Is.EqualTo(before), "the 50-frame session is untouched");
+                Assert.That(Directory.GetFiles(Path.GetDirectoryName(path), "." + Path.GetFileName(path) + ".*"), Is.Empty, "no temporary file is left (.NAME.PID-RANDOM.tmp)");
+                using (var r = SessionReader.Open(path))
+                {
+                    var f = r.CreateFrame();
+                    int n = 0;
+                    while (r.ReadFrame(f)) n++;
+                    Assert.That(n, Is.EqualTo(50));
+                }
+            }
+            finally { File.Delete(path); }
+        }
+
         [Test]
         public void WriterRejectsInvalidTrackedPosesAndTimeGoingBack()
         {
