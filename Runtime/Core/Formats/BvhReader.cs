@@ -236,7 +236,7 @@ namespace AvatarGo.Core
                 if (frames < 0) throw Error(framesLine, $"frame count must not be negative, found {frames}");
                 if ((long)frames * _channelTotal > MaxValues)
                     throw Error(framesLine, $"{frames} frames of {_channelTotal} channels are more than {MaxValues} values (the reader's limit)");
-                float frameTime = ParseHeaderNumber("Frame Time:", out int timeLine, integer: false);
+                float frameTime = (float)ParseHeaderNumber("Frame Time:", out int timeLine, integer: false);
                 if (!(frameTime >= MinFrameTime && frameTime <= MaxFrameTime))
                     throw Error(timeLine, $"frame time must be from {MinFrameTime.ToString(CultureInfo.InvariantCulture)} to {MaxFrameTime.ToString(CultureInfo.InvariantCulture)} seconds, found {frameTime.ToString(CultureInfo.InvariantCulture)}");
 
@@ -276,7 +276,8 @@ namespace AvatarGo.Core
                 }
             }
 
-            private float ParseHeaderNumber(string label, out int line, bool integer)
+            // A double, which holds every frame count exactly (a float made 2147483647 frames -2147483648).
+            private double ParseHeaderNumber(string label, out int line, bool integer)
             {
                 bool found = NextNonEmptyLine();
                 line = LineNumber;

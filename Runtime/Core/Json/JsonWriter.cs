@@ -61,6 +61,17 @@ namespace AvatarGo.Core
             return this;
         }
 
+        /// <summary>
+        /// Writes an integer value exactly (an <c>int</c> argument comes here: through <see cref="Value(float)"/> it lost its
+        /// digits beyond 2^24, a device id 16777217 written as 16777216).
+        /// </summary>
+        public JsonWriter Value(long value)
+        {
+            Separator();
+            _sb.Append(value.ToString(CultureInfo.InvariantCulture));
+            return this;
+        }
+
         /// <summary>Writes true or false.</summary>
         public JsonWriter Value(bool value)
         {

@@ -135,6 +135,9 @@ namespace AvatarGo.Core.Tests
             int framesLine = hierarchy.Count(c => c == '\n') + 2;
             AssertFailsAtLine(hierarchy + Motion(2000000000, 12006, 1), framesLine, "more than 134217728 values");
             AssertFailsAtLine(hierarchy + Motion(int.MaxValue, 12006, 0), framesLine, "values (the reader's limit)");
+            // The count as written (read through a float, 16777217 was 16777216, and 2147483647 negative where float to int
+            // conversions do not saturate, as on Mono).
+            AssertFailsAtLine(hierarchy + Motion(16777217, 12006, 0), framesLine, "16777217 frames of 12006 channels");
             // Within the limit, a claim the file does not back fails where the file ends.
             string oneChannel = "HIERARCHY\nROOT a\n{\nOFFSET 0 0 0\nCHANNELS 1 Xrotation\n}\n";
             AssertFailsAtLine(oneChannel + Motion(100000000, 1, 3), 13, "the file ends after 3 of 100000000 frames");

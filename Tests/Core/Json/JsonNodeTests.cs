@@ -32,6 +32,8 @@ namespace AvatarGo.Core.Tests
                 .Name("third").Value(1f / 3f)
                 .Name("tiny").Value(1e-300)
                 .Name("flag").Value(true)
+                .Name("id").Value(16777217)
+                .Name("max").Value(int.MaxValue)
                 .Name("nothing").Null()
                 .Name("v").Values(0.1f, -2f, 3.5e-7f)
                 .Name("list").BeginArray().Value(1.0).BeginObject().EndObject().BeginArray().EndArray().EndArray()
@@ -42,6 +44,8 @@ namespace AvatarGo.Core.Tests
             Assert.That((float)n.GetNumber("third"), Is.EqualTo(1f / 3f));
             Assert.That(n.GetNumber("tiny"), Is.EqualTo(1e-300));
             Assert.That(n["flag"].Bool, Is.True);
+            Assert.That(n.GetNumber("id"), Is.EqualTo(16777217), "an int exactly (through a float it became 16777216)");
+            Assert.That(n.GetNumber("max"), Is.EqualTo(int.MaxValue));
             Assert.That(n["nothing"].Kind, Is.EqualTo(JsonKind.Null));
             Assert.That(n.GetVector3("v").Z, Is.EqualTo(3.5e-7f));
             Assert.That(n["list"].Items.Count, Is.EqualTo(3));
