@@ -13,6 +13,12 @@ namespace AvatarGo.Core
         /// <summary>A device counts as tracked through the window when it was tracked in this share of its frames (80 %).</summary>
         public const float MinTrackedFraction = 0.8f;
 
+        /// <summary>
+        /// A device counts as still only when the window's frames span at least this share of it (80 %): a press in the first
+        /// frames after the calibrator was made or reset, with a frame or two to average, is refused as not yet still.
+        /// </summary>
+        public const float MinCoveredFraction = 0.8f;
+
         private readonly CalibrationSettings _settings;
         private readonly int _capacity;
         private readonly double[] _times;
@@ -74,11 +80,13 @@ namespace AvatarGo.Core
         {
             if ((uint)device >= (uint)DeviceCount) throw new ArgumentOutOfRangeException(nameof(device));
             int n = 0, total = 0;
+            double oldest = now;
             for (int k = 0; k < _count; k++)
             {
                 int i = (_head - k + _capacity) % _capacity;
                 if (now - _times[i] > _settings.WindowSeconds + 1e-9) break;
                 total++;
+                oldest = _times[i];
                 if (!_tracked[device, i]) continue;
                 _positions[n] = _poses[device, i].Position;
                 _rotations[n] = _poses[device, i].Rotation;
@@ -89,7 +97,9 @@ namespace AvatarGo.Core
             for (int i = 0; i < n; i++) p += _positions[i];
             p /= n;
             Quaternion q = Rotations.Average(new ReadOnlySpan<Quaternion>(_rotations, 0, n));
-            bool still = true;
+            // A window its frames do not yet cover (a press in the first frames after the calibrator was made or reset)
+            // measures too little to count as still: one frame is always still. A full ring covers what it can hold.
+            bool still = now - oldest >= MinCoveredFraction * _settings.WindowSeconds - 1e-6 || total == _capacity;
             for (int i = 0; i < n && still; i++)
                 still = Vector3.Distance(_positions[i], p) <= _settings.StillPosition && Rotations.AngleDegrees(_rotations[i], q) <= _settings.StillRotationDegrees;
             return new WindowAverage(new RigidPose(p, q), n / (float)total, still);
