@@ -282,9 +282,9 @@ namespace AvatarGo
                 Debug.Log($"{nameof(AvatarGoCalibrator)}: the saved calibration {path} is not for this avatar ({reason}).", this);
                 return false;
             }
-            if (!_pipeline.TryRestore(profile))
+            if (!_pipeline.TryRestore(profile, out string why))
             {
-                Debug.Log($"{nameof(AvatarGoCalibrator)}: the saved calibration's devices are not all connected (yet); calibrate, or wait for them.", this);
+                Debug.Log($"{nameof(AvatarGoCalibrator)}: the saved calibration {path} is not used: {why}; calibrate, or wait for its devices.", this);
                 return false;
             }
             AnnounceRefinement(_refinement.AfterUpdate(_hasFrame ? _frame.Time : 0.0, _pipeline, _flow.Restored(_hasFrame ? _frame.Time : 0.0)));

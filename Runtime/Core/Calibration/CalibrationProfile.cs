@@ -124,16 +124,38 @@ namespace AvatarGo.Core
         /// True when <paramref name="devices"/> contains a device with each role's serial (the same devices are worn),
         /// so this profile can be reused without calibrating again.
         /// </summary>
-        public bool MatchesDevices(System.Collections.Generic.IReadOnlyList<DeviceInfo> devices)
+        public bool MatchesDevices(System.Collections.Generic.IReadOnlyList<DeviceInfo> devices) => MatchesDevices(devices, out _);
+
+        /// <summary>
+        /// As <see cref="MatchesDevices(System.Collections.Generic.IReadOnlyList{DeviceInfo})"/>, with why not: a role with no
+        /// serial (the runtime gave none, as OpenXR often does: such a calibration cannot be matched to devices), two roles
+        /// with one serial (they would land on one device), or a serial no connected device has.
+        /// </summary>
+        public bool MatchesDevices(System.Collections.Generic.IReadOnlyList<DeviceInfo> devices, out string reason)
         {
-            if (devices == null) return false;
+            reason = null;
+            if (devices == null) { reason = "no devices"; return false; }
             foreach (DeviceRole role in BodyRoles.All)
             {
                 string serial = _serials[role];
+                if (string.IsNullOrEmpty(serial))
+                {
+                    reason = $"it holds no serial for the {role} device (the runtime gave none), so its devices cannot be recognised";
+                    return false;
+                }
+                foreach (DeviceRole other in BodyRoles.All)
+                    if (other != role && _serials[other] == serial)
+                    {
+                        reason = $"the {role} and {other} devices have the same serial '{serial}'";
+                        return false;
+                    }
                 bool found = false;
-                if (!string.IsNullOrEmpty(serial))
-                    for (int i = 0; i < devices.Count && !found; i++) found = devices[i].Serial == serial;
-                if (!found) return false;
+                for (int i = 0; i < devices.Count && !found; i++) found = devices[i].Serial == serial;
+                if (!found)
+                {
+                    reason = $"no connected device has the {role} device's serial '{serial}' (yet)";
+                    return false;
+                }
             }
             return true;
         }

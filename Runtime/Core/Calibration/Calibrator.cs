@@ -93,10 +93,13 @@ namespace AvatarGo.Core
         /// the scaled avatar and its calibration pose are rebuilt and the state becomes <see cref="CalibrationState.Calibrated"/>.
         /// Returns false (and changes nothing) when a device of the profile is not connected.
         /// </summary>
-        public bool TryRestore(CalibrationProfile profile)
+        public bool TryRestore(CalibrationProfile profile) => TryRestore(profile, out _);
+
+        /// <summary>As <see cref="TryRestore(CalibrationProfile)"/>, with why not (<see cref="CalibrationProfile.MatchesDevices(System.Collections.Generic.IReadOnlyList{DeviceInfo}, out string)"/>).</summary>
+        public bool TryRestore(CalibrationProfile profile, out string reason)
         {
             if (profile == null) throw new ArgumentNullException(nameof(profile));
-            if (!profile.MatchesDevices(_devices)) return false;
+            if (!profile.MatchesDevices(_devices, out reason)) return false;
             var roles = new PerRole<int>(-1);
             foreach (DeviceRole role in BodyRoles.All)
                 for (int d = 0; d < _devices.Length; d++)

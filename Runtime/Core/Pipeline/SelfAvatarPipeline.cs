@@ -7,7 +7,7 @@ namespace AvatarGo.Core
     /// <summary>
     /// The whole system in one object: device samples, analog inputs and trigger events in; the calibration's state and
     /// the avatar's solved pose (body and fingers) out. Until calibrated it runs the Walk-In-Avatar
-    /// <see cref="Calibrator"/> (or takes a saved profile, <see cref="TryRestore"/>); from then on every frame maps the
+    /// <see cref="Calibrator"/> (or takes a saved profile, <see cref="TryRestore(CalibrationProfile)"/>); from then on every frame maps the
     /// devices to targets with the exact offsets (<see cref="BodyTargetMapper"/>), solves the body
     /// (<see cref="FullBodyIk"/>), puts each hand on its controller and closes its fingers on the controller's surface
     /// (<see cref="FingerSolver"/>). Unity components call <see cref="Update(double, ReadOnlySpan{DeviceSample}, ReadOnlySpan{float}, ReadOnlySpan{float}, IReadOnlyList{DeviceEvent})"/>
@@ -160,9 +160,12 @@ namespace AvatarGo.Core
         /// starts with the next frame (a refinement exercise being recorded is dropped). False, with nothing changed, when a
         /// device of the profile is not connected.
         /// </summary>
-        public bool TryRestore(CalibrationProfile profile)
+        public bool TryRestore(CalibrationProfile profile) => TryRestore(profile, out _);
+
+        /// <summary>As <see cref="TryRestore(CalibrationProfile)"/>, with why not (a role without a serial, two with one, a device not connected).</summary>
+        public bool TryRestore(CalibrationProfile profile, out string reason)
         {
-            if (!_calibrator.TryRestore(profile)) return false;
+            if (!_calibrator.TryRestore(profile, out reason)) return false;
             _refinement = null; // an exercise recorded on the previous avatar does not apply to the restored one
             Setup();
             return true;

@@ -86,6 +86,31 @@ namespace AvatarGo.Core.Tests
             Assert.That(new Calibrator(otherDevices, wearer.Map).TryRestore(loaded), Is.False, "another tracker is worn");
         }
 
+        /// <summary>
+        /// A restore that cannot match its devices says why (found in review: every case was told "its devices are not all
+        /// connected", a profile made on a runtime without serials too, and two roles with one serial landed on one device).
+        /// </summary>
+        [Test]
+        public void ARestoreThatCannotMatchItsDevicesSaysWhy()
+        {
+            Calibrator first = Calibrated(out Wearer wearer);
+            string json = CalibrationProfileStore.ToJson(first.Profile);
+            var other = (DeviceInfo[])wearer.Devices.Clone();
+            other[0] = new DeviceInfo(other[0].Id, other[0].Class, "SOMEONE-ELSES");
+            Assert.That(new Calibrator(other, wearer.Map).TryRestore(CalibrationProfileStore.FromJson(json), out string why), Is.False);
+            Assert.That(why, Does.Contain("no connected device has the").And.Contain("serial"));
+            string left = first.Profile.Serial(DeviceRole.LeftHand), right = first.Profile.Serial(DeviceRole.RightHand);
+            Assume.That(left, Is.Not.Empty);
+            CalibrationProfile twice = CalibrationProfileStore.FromJson(json.Replace("\"" + right + "\"", "\"" + left + "\""));
+            var calibrator = new Calibrator(wearer.Devices, wearer.Map);
+            Assert.That(calibrator.TryRestore(twice, out why), Is.False, "two roles, one serial");
+            Assert.That(why, Does.Contain("the same serial '" + left + "'"));
+            CalibrationProfile none = CalibrationProfileStore.FromJson(json.Replace("\"" + left + "\"", "\"\""));
+            Assert.That(calibrator.TryRestore(none, out why), Is.False, "no serial");
+            Assert.That(why, Does.Contain("no serial for the LeftHand device"));
+            Assert.That(calibrator.State, Is.Not.EqualTo(CalibrationState.Calibrated), "nothing changed");
+        }
+
         [Test]
         public void RescalingKeepsTheAvatarOnItsFloorSpot()
         {
