@@ -74,7 +74,6 @@ namespace AvatarGo.Core
                 return CalibrationError.DeviceNotTracked;
             }
             if (hmds.Count > 1) explanation.Append($"Using the first tracked of {hmds.Count} headsets. ");
-            if (liveControllers.Count > 2) explanation.Append($"Using the first two of {liveControllers.Count} controllers. ");
 
             RigidPose head = averages[hmd].Mean;
             float floor = _settings.FloorHeight;
@@ -85,6 +84,9 @@ namespace AvatarGo.Core
                 floor = lowest - _settings.FootTrackerHeight;
             }
             float eyeHeight = head.Position.Y - floor;
+            (int handA, int handB) = liveControllers.Count == 2 ? (liveControllers[0], liveControllers[1]) : HandsOfATPose(liveControllers, averages, head.Position, floor + 0.82f * eyeHeight);
+            if (liveControllers.Count > 2)
+                explanation.Append($"{liveControllers.Count} controllers are tracked: the two that stand as hands in a T-pose (widest apart, level, at shoulder height, either side of the head) are used; the others are ignored. ");
 
             // Trackers: runtime roles first; otherwise the pelvis is the one nearest waist height (0.57 × eye height) close to
             // the head, the feet the two lowest close to the body (a spare tracker on a table or the floor nearby scores badly).
@@ -120,8 +122,28 @@ namespace AvatarGo.Core
             }
             if (liveTrackers.Count > 3)
                 explanation.Append($"{liveTrackers.Count} trackers are tracked: the one nearest waist height under the head is the pelvis, the two lowest near the body are the feet; the others are ignored. ");
-            selection = new DeviceSelection(hmd, liveControllers[0], liveControllers[1], pelvis, footA, footB, floor, eyeHeight);
+            selection = new DeviceSelection(hmd, handA, handB, pelvis, footA, footB, floor, eyeHeight);
             return CalibrationError.None;
+        }
+
+        // Of more than two controllers (a spare one on a desk, listed first), the pair that stands most like the hands of a
+        // T-pose: widest apart horizontally, less what they differ in height (twice), how far their mean height is from the
+        // shoulders' and how far they are from lying either side of the head. Taken in device order, a spare controller made
+        // the calibration impossible ("raise both arms") with nothing to tell why.
+        private static (int, int) HandsOfATPose(List<int> controllers, ReadOnlySpan<WindowAverage> averages, Vector3 head, float shoulderHeight)
+        {
+            int bestA = controllers[0], bestB = controllers[1];
+            float best = float.NegativeInfinity;
+            for (int i = 0; i < controllers.Count; i++)
+                for (int j = i + 1; j < controllers.Count; j++)
+                {
+                    Vector3 a = averages[controllers[i]].Position, b = averages[controllers[j]].Position;
+                    float spread = HorizontalDistance(a, b);
+                    float astride = HorizontalDistance(a, head) + HorizontalDistance(b, head) - spread;
+                    float score = spread - 2f * Math.Abs(a.Y - b.Y) - Math.Abs(0.5f * (a.Y + b.Y) - shoulderHeight) - astride;
+                    if (score > best) { best = score; bestA = controllers[i]; bestB = controllers[j]; }
+                }
+            return (bestA, bestB);
         }
 
         /// <summary>

@@ -107,6 +107,31 @@ namespace AvatarGo.Core.Tests
             Assert.That(roles[DeviceRole.RightHand], Is.EqualTo(4));
         }
 
+        /// <summary>
+        /// A spare controller (on a desk, listed before the held ones) is ignored: the two that stand as the hands of a T-pose
+        /// are used (found in review: the first two in device order were, and the wearer was told to raise both arms forever).
+        /// </summary>
+        [Test]
+        public void IdentificationIgnoresASpareController()
+        {
+            var devices = new DeviceInfo[Devices.Length + 1];
+            devices[0] = new DeviceInfo(10, DeviceClass.Controller, "SPARE");
+            Array.Copy(Devices, 0, devices, 1, Devices.Length);
+            WindowAverage[] tpose = TPose();
+            var averages = new WindowAverage[tpose.Length + 1];
+            averages[0] = new WindowAverage(new RigidPose(new Vector3(0.9f, 0.75f, 0.8f), Quaternion.Identity), 1f, true); // on a desk
+            Array.Copy(tpose, 0, averages, 1, tpose.Length);
+            var identifier = new DeviceIdentifier(devices, new CalibrationSettings());
+            var explanation = new StringBuilder();
+            Assert.That(identifier.Select(averages, out DeviceSelection chosen, out _, explanation), Is.EqualTo(CalibrationError.None));
+            var roles = new PerRole<int>(-1);
+            Assert.That(identifier.AssignSides(chosen, averages, Vector3.UnitX, roles, out _), Is.EqualTo(CalibrationError.None));
+            Assert.That(roles[DeviceRole.RightHand], Is.EqualTo(2), "C1, held out to the right");
+            Assert.That(roles[DeviceRole.LeftHand], Is.EqualTo(5), "C2, held out to the left");
+            Assert.That(explanation.ToString(), Does.Contain("3 controllers are tracked"));
+            Assert.That(new TPoseValidator(new CalibrationSettings()).CheckPosture(chosen, averages, out _), Is.EqualTo(CalibrationError.None));
+        }
+
         [Test]
         public void TheValidatorChecksPostureAndThePlane()
         {
