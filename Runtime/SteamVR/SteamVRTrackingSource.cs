@@ -63,17 +63,29 @@ namespace AvatarGo
         // A pose action the project's actions lack is a setup error: logged once, and the source disables itself.
         private bool ResolveActions()
         {
-            _pose = SteamVR_Input.GetPoseActionFromPath(m_PoseAction);
+            // GetPoseActionFromPath never returns null (an unknown path gives a placeholder that is never active), so the
+            // path is checked first.
+            _pose = SteamVR_Input.HasActionPath(m_PoseAction) ? SteamVR_Input.GetPoseActionFromPath(m_PoseAction) : null;
             if (_pose == null)
             {
                 SetupErrors.Disable(this, "AvatarGo: the SteamVR Tracking Source found no pose action '" + m_PoseAction +
                                           "' in the project's SteamVR actions (Window > SteamVR Input); it is disabled.");
                 return false;
             }
-            _trigger = string.IsNullOrEmpty(m_TriggerAction) ? null : SteamVR_Input.GetSingleActionFromPath(m_TriggerAction);
-            _triggerButton = string.IsNullOrEmpty(m_TriggerButtonAction) ? null : SteamVR_Input.GetBooleanActionFromPath(m_TriggerButtonAction);
-            _grip = string.IsNullOrEmpty(m_GripAction) ? null : SteamVR_Input.GetBooleanActionFromPath(m_GripAction);
+            _trigger = Known(m_TriggerAction) ? SteamVR_Input.GetSingleActionFromPath(m_TriggerAction) : null;
+            _triggerButton = Known(m_TriggerButtonAction) ? SteamVR_Input.GetBooleanActionFromPath(m_TriggerButtonAction) : null;
+            _grip = Known(m_GripAction) ? SteamVR_Input.GetBooleanActionFromPath(m_GripAction) : null;
             return true;
+        }
+
+        // An optional action: none when no path is set; a path the project's actions lack is warned about (SteamVR would give
+        // a placeholder that never fires: no trigger, so no calibration step, with nothing said).
+        private bool Known(string path)
+        {
+            if (string.IsNullOrEmpty(path)) return false;
+            if (SteamVR_Input.HasActionPath(path)) return true;
+            Debug.LogWarning("AvatarGo: the SteamVR Tracking Source found no action '" + path + "' in the project's SteamVR actions (Window > SteamVR Input); it is not read.", this);
+            return false;
         }
 
         private void OnDisable()

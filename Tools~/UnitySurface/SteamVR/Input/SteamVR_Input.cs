@@ -10,6 +10,9 @@ namespace Valve.VR
 
         public static SteamVR_Action_Pose GetPoseActionFromPath(string path, bool caseSensitive = false) => throw null;
 
+        // Since 2.2b5 (e8956c1); 2.8.2 line 535. GetPoseActionFromPath never returns null: an unknown path gives a placeholder.
+        public static bool HasActionPath(string path, bool caseSensitive = false) => throw null;
+
         public static SteamVR_Action_Single GetSingleActionFromPath(string path, bool caseSensitive = false) => throw null;
 
         public static SteamVR_Action_Boolean GetBooleanActionFromPath(string path, bool caseSensitive = false) => throw null;
