@@ -201,7 +201,7 @@ namespace AvatarGo
         }
 
         // The mirrored copy: the avatar instantiated under an inactive holder (so that none of its scripts wakes up), its
-        // scripts removed and its Animators disabled, its renderers as the avatar's were.
+        // scripts and colliders removed and its Animators disabled, its renderers as the avatar's were.
         private bool CreateMirror()
         {
             if (_mirrorFailed) return false;
@@ -211,6 +211,8 @@ namespace AvatarGo
             copy.name = _binding.Root.name + " (mirror)";
             foreach (MonoBehaviour script in copy.GetComponentsInChildren<MonoBehaviour>(true)) Object.DestroyImmediate(script);
             foreach (Animator animator in copy.GetComponentsInChildren<Animator>(true)) animator.enabled = false;
+            // A picture, not a body: no collider (a CharacterController is one) for rays, hands or bodies to hit.
+            foreach (Collider collider in copy.GetComponentsInChildren<Collider>(true)) Object.DestroyImmediate(collider);
             Renderer[] renderers = copy.GetComponentsInChildren<Renderer>(true);
             for (int i = 0; i < renderers.Length; i++) renderers[i].enabled = i < _avatarRendererWasOn.Length ? _avatarRendererWasOn[i] : true;
             _mirror = _binding.OnCopy(copy.transform);
