@@ -45,6 +45,9 @@ namespace AvatarGo
             if (avatar == null || !avatar.isValid || !avatar.isHuman)
             {
                 Debug.LogError("The mannequin's humanoid Avatar could not be built (Unity logged why above).", context);
+                // Nothing half-built is left in the scene (found in review).
+                if (avatar != null) Object.Destroy(avatar);
+                Object.Destroy(root);
                 return null;
             }
             avatar.name = blueprint.RootName;

@@ -137,13 +137,16 @@ namespace AvatarGo
         private bool _hasMirror, _mirrorFailed;
         private ProportionedBones _bones;
 
-        /// <summary>Where the devices come from.</summary>
+        /// <summary>Where the devices come from. May be set at run time: the next frame makes a pipeline for the new source's devices.</summary>
         public AvatarGoTrackingSource Source { get => m_Source; set => m_Source = value; }
 
-        /// <summary>The avatar's Animator (humanoid).</summary>
+        /// <summary>
+        /// The avatar's Animator (humanoid). Read in <c>Start</c>, where the avatar is bound: set it before (a setup error
+        /// found there disables the component for good; fix the setup and add the component again).
+        /// </summary>
         public Animator Animator { get => m_Animator; set => m_Animator = value; }
 
-        /// <summary>The root of an avatar without a humanoid Animator.</summary>
+        /// <summary>The root of an avatar without a humanoid Animator. Read in <c>Start</c>, as <see cref="Animator"/> is.</summary>
         public Transform AvatarRoot { get => m_AvatarRoot; set => m_AvatarRoot = value; }
 
         /// <summary>Exact or fixed offsets; read when the pipeline is made and at each calibration.</summary>
