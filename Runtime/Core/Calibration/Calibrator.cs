@@ -182,7 +182,7 @@ namespace AvatarGo.Core
             }
             if (error == CalibrationError.None) error = _validator.CheckPosture(chosen, _averages, out detail);
             System.Numerics.Vector3 forward = System.Numerics.Vector3.UnitZ;
-            if (error == CalibrationError.None) error = _validator.FitBodyPlane(chosen, _averages, out forward);
+            if (error == CalibrationError.None) error = _validator.FitBodyPlane(chosen, _averages, out forward, out detail);
             if (error == CalibrationError.None)
                 error = _identifier.AssignSides(chosen, _averages, System.Numerics.Vector3.Cross(System.Numerics.Vector3.UnitY, forward), _deviceByRole, out detail);
             if (error == CalibrationError.None) error = _validator.CheckLevels(_deviceByRole, _averages, chosen.Floor, chosen.EyeHeight, out detail);

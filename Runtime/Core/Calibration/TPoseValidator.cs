@@ -38,7 +38,12 @@ namespace AvatarGo.Core
         {
             detail = null;
             Quaternion head = averages[selection.Hmd].Mean.Rotation;
-            if (Vectors.AngleDegrees(Vector3.Transform(Vector3.UnitY, head), Vector3.UnitY) > 25f) return CalibrationError.HeadNotUpright;
+            float tilt = Vectors.AngleDegrees(Vector3.Transform(Vector3.UnitY, head), Vector3.UnitY);
+            if (tilt > 25f)
+            {
+                detail = $"the headset tilted {tilt:0}°";
+                return CalibrationError.HeadNotUpright;
+            }
             Vector3 between = averages[selection.ControllerA].Position - averages[selection.ControllerB].Position;
             float spread = new Vector2(between.X, between.Z).Length();
             if (spread < 0.7f * selection.EyeHeight)
@@ -54,16 +59,36 @@ namespace AvatarGo.Core
         /// the HMD looks, and be flat (RMS distance ≤ 15 cm); else <see cref="CalibrationError.NotFacingPlane"/>.
         /// <paramref name="forward"/> is then the wearer's horizontal facing (the plane's normal).
         /// </summary>
-        public CalibrationError FitBodyPlane(in DeviceSelection selection, ReadOnlySpan<WindowAverage> averages, out Vector3 forward)
+        public CalibrationError FitBodyPlane(in DeviceSelection selection, ReadOnlySpan<WindowAverage> averages, out Vector3 forward) =>
+            FitBodyPlane(selection, averages, out forward, out _);
+
+        /// <summary>As <see cref="FitBodyPlane(in DeviceSelection, ReadOnlySpan{WindowAverage}, out Vector3)"/>, with which test failed and by how much.</summary>
+        public CalibrationError FitBodyPlane(in DeviceSelection selection, ReadOnlySpan<WindowAverage> averages, out Vector3 forward, out string detail)
         {
             forward = Vector3.UnitZ;
+            detail = null;
             Vector3 look = Vectors.ProjectOnPlane(Vector3.Transform(Vector3.UnitZ, averages[selection.Hmd].Mean.Rotation), Vector3.UnitY);
             Span<Vector3> points = stackalloc Vector3[6];
             for (int i = 0; i < 6; i++) points[i] = averages[selection[i]].Position;
             BodyPlane plane = BodyPlane.Fit(points, look);
             var facing = new Vector3(plane.Normal.X, 0f, plane.Normal.Z);
-            if (Math.Abs(plane.Normal.Y) > 0.35f || facing.LengthSquared() < 1e-6f || Vectors.AngleDegrees(facing, look) > 45f || plane.RmsDistance > 0.15f)
+            if (Math.Abs(plane.Normal.Y) > 0.35f || facing.LengthSquared() < 1e-6f)
+            {
+                // A seated wearer (the feet forward) or one bending over: the devices do not stand in a vertical plane.
+                detail = $"the devices' plane leans {MathF.Asin(Math.Min(1f, Math.Abs(plane.Normal.Y))) * Rotations.Rad2Deg:0}° from vertical";
                 return CalibrationError.NotFacingPlane;
+            }
+            float away = Vectors.AngleDegrees(facing, look);
+            if (away > 45f)
+            {
+                detail = $"the body faces {away:0}° away from where the headset looks";
+                return CalibrationError.NotFacingPlane;
+            }
+            if (plane.RmsDistance > 0.15f)
+            {
+                detail = $"the devices lie {plane.RmsDistance:0.00} m (RMS) off one plane";
+                return CalibrationError.NotFacingPlane;
+            }
             forward = Vector3.Normalize(facing);
             return CalibrationError.None;
         }

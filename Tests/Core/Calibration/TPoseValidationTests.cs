@@ -10,7 +10,7 @@ namespace AvatarGo.Core.Tests
     public class TPoseValidationTests
     {
         private static CalibrationError Calibrate(Action<Wearer> pose = null, Action<int, DeviceSample[]> samples = null,
-            Func<Wearer, IReadOnlyList<DeviceInfo>> devices = null)
+            Func<Wearer, IReadOnlyList<DeviceInfo>> devices = null, Action<string> message = null)
         {
             var wearer = new Wearer("mocapbank_30fps.bvh", 7, DeviceMountings.Default());
             wearer.StandInTPose(new RigidPose(new Vector3(0.5f, 0, -1), Quaternion.Identity));
@@ -28,6 +28,7 @@ namespace AvatarGo.Core.Tests
                 calibrator.Update(i / 90.0, fed, i == 89 ? press : null);
             }
             Assert.That(calibrator.LastStep.Message, Is.Not.Empty);
+            message?.Invoke(calibrator.LastStep.Message);
             return calibrator.LastStep.Error;
         }
 
@@ -78,6 +79,34 @@ namespace AvatarGo.Core.Tests
 
         [Test]
         public void LookingSideways() => Assert.That(Calibrate(pose: w => Turn(w, HumanoidBone.Head, Vector3.UnitY, 70f)), Is.EqualTo(CalibrationError.NotFacingPlane));
+
+        /// <summary>
+        /// The refusals of the head and the body plane say what was measured (found in review: four different failures of
+        /// the plane, and the head's tilt, gave the bare message, so a seated wearer was told to look straight ahead).
+        /// </summary>
+        [Test]
+        public void HeadAndPlaneRefusalsSayWhatWasMeasured()
+        {
+            Assert.That(CalibrateMessage(pose: w => Turn(w, HumanoidBone.Head, Vector3.UnitX, 40f)), Does.Contain("the headset tilted"));
+            Assert.That(CalibrateMessage(pose: w => Turn(w, HumanoidBone.Head, Vector3.UnitY, 70f)), Does.Contain("away from where the headset looks"));
+            // Seated: the feet 0.45 m forward, a little lower.
+            Assert.That(CalibrateMessage(samples: (i, s) =>
+            {
+                Move(s, DeviceRole.LeftFoot, new Vector3(0, 0, 0.45f));
+                Move(s, DeviceRole.RightFoot, new Vector3(0, 0, 0.45f));
+                Move(s, DeviceRole.Pelvis, new Vector3(0, -0.45f, 0));
+                Move(s, DeviceRole.Head, new Vector3(0, -0.45f, 0));
+                Move(s, DeviceRole.LeftHand, new Vector3(0, -0.45f, 0));
+                Move(s, DeviceRole.RightHand, new Vector3(0, -0.45f, 0));
+            }), Does.Contain("from vertical").Or.Contain("off one plane"));
+        }
+
+        private static string CalibrateMessage(Action<Wearer> pose = null, Action<int, DeviceSample[]> samples = null)
+        {
+            string message = null;
+            Calibrate(pose, samples, null, m => message = m);
+            return message;
+        }
 
         [Test]
         public void BothControllersInOneHand() => Assert.That(Calibrate(samples: (i, s) =>
