@@ -79,7 +79,7 @@ namespace AvatarGo.Simulation
         private static RigidPose GripInHand(HumanoidMap wearer, SkeletonPose tpose, BodySide side, ControllerProfile controller)
         {
             float radius = controller != null ? -controller.Shape.Distance(Vector3.Zero) : DefaultHandleRadius;
-            if (HandModel.CanModel(wearer, side, out _))
+            if (HandModel.CanModel(wearer, side, tpose, out _))
             {
                 var hand = new HandModel(wearer, side, tpose);
                 return HandModel.GripPose(hand.PalmCentreInHand, hand.PalmNormalInHand, hand.AcrossInHand, radius);

@@ -212,7 +212,7 @@ namespace AvatarGo.Core
         internal static Vector3 Grip(HumanoidMap map, SkeletonPose pose, BodySide side)
         {
             RigidPose wrist = pose.World[map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]];
-            if (HandModel.CanModel(map, side, out _))
+            if (HandModel.CanModel(map, side, pose, out _))
             {
                 var hand = new HandModel(map, side, pose);
                 return (wrist * HandModel.GripPose(hand.PalmCentreInHand, hand.PalmNormalInHand, hand.AcrossInHand, HandleRadius)).Position;
@@ -229,7 +229,7 @@ namespace AvatarGo.Core
         internal static RigidPose GripPose(HumanoidMap map, SkeletonPose pose, BodySide side, float handleRadius)
         {
             RigidPose wrist = pose.World[map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]];
-            if (HandModel.CanModel(map, side, out _))
+            if (HandModel.CanModel(map, side, pose, out _))
             {
                 var hand = new HandModel(map, side, pose);
                 return wrist * HandModel.GripPose(hand.PalmCentreInHand, hand.PalmNormalInHand, hand.AcrossInHand, handleRadius);

@@ -43,7 +43,7 @@ namespace AvatarGo.Core
         internal float ThumbSpreadRadians;
 
         /// <summary>Builds the model of one hand of <paramref name="map"/>'s rig with its rest pose as the open hand.</summary>
-        /// <exception cref="ArgumentException">The hand cannot be modelled (<see cref="CanModel"/> says why).</exception>
+        /// <exception cref="ArgumentException">The hand cannot be modelled (<see cref="CanModel(HumanoidMap, BodySide, SkeletonPose, out string)"/> says why).</exception>
         public HandModel(HumanoidMap map, BodySide side) : this(map, side, null)
         {
         }
@@ -54,7 +54,7 @@ namespace AvatarGo.Core
         /// (<see cref="TPoser"/>: fingers side by side, relaxed), so that the grip does not depend on how the rig's rest pose holds its
         /// fingers (a rest with every bone along one axis has them in a line). Null uses the rest pose.
         /// </summary>
-        /// <exception cref="ArgumentException">The hand cannot be modelled (<see cref="CanModel"/> says why), or the pose is of another skeleton.</exception>
+        /// <exception cref="ArgumentException">The hand cannot be modelled (<see cref="CanModel(HumanoidMap, BodySide, SkeletonPose, out string)"/> says why), or the pose is of another skeleton.</exception>
         public HandModel(HumanoidMap map, BodySide side, SkeletonPose openPose)
         {
             if (map == null) throw new ArgumentNullException(nameof(map));
@@ -78,6 +78,8 @@ namespace AvatarGo.Core
                 s.ComputeWorld(rest, world);
             }
             RigidPose hand = world[HandJoint];
+            string degenerate = PalmProblem(map, side, world);
+            if (degenerate != null) throw new ArgumentException(degenerate, nameof(openPose));
 
             int index = map[HumanoidBones.Finger(side, Finger.Index, Phalanx.Proximal)];
             int middle = map[HumanoidBones.Finger(side, Finger.Middle, Phalanx.Proximal)];
@@ -146,6 +148,46 @@ namespace AvatarGo.Core
             if (map == null) throw new ArgumentNullException(nameof(map));
             return CanModelFromBones(map.Has, side, out reason);
         }
+
+        /// <summary>
+        /// As <see cref="CanModel(HumanoidMap, BodySide, out string)"/>, and the palm's geometry in <paramref name="openPose"/>
+        /// (null: the rest pose) gives a plane: the middle finger's base away from the wrist, the index's and the little
+        /// finger's bases apart, and the line between them not along the hand. Where it does not, the hand would get NaN
+        /// rotations; it is then held without finger IK, and <paramref name="reason"/> says why.
+        /// </summary>
+        public static bool CanModel(HumanoidMap map, BodySide side, SkeletonPose openPose, out string reason)
+        {
+            if (!CanModel(map, side, out reason)) return false;
+            RigidPose[] world;
+            if (openPose != null && openPose.Skeleton.JointCount == map.Skeleton.JointCount) world = openPose.World;
+            else
+            {
+                var rest = new RigidPose[map.Skeleton.JointCount];
+                world = new RigidPose[rest.Length];
+                map.Skeleton.GetRestLocal(rest);
+                map.Skeleton.ComputeWorld(rest, world);
+            }
+            reason = PalmProblem(map, side, world);
+            return reason == null;
+        }
+
+        // Why the knuckles give no palm plane (null when they do): the geometry the palm's axes are normalised from.
+        private static string PalmProblem(HumanoidMap map, BodySide side, RigidPose[] world)
+        {
+            Vector3 wrist = world[map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)]].Position;
+            Vector3 index = world[map[HumanoidBones.Finger(side, Finger.Index, Phalanx.Proximal)]].Position;
+            Vector3 middle = world[map[HumanoidBones.Finger(side, Finger.Middle, Phalanx.Proximal)]].Position;
+            Vector3 little = world[map[HumanoidBones.Finger(side, Finger.Little, Phalanx.Proximal)]].Position;
+            Vector3 along = middle - wrist, across = index - little;
+            if (!(along.Length() > MinPalmLength)) return $"the {side} hand's middle finger base is at its wrist (no palm to model)";
+            if (!(across.Length() > MinPalmLength)) return $"the {side} hand's index and little finger bases are at one point (no palm to model)";
+            if (!(Vector3.Cross(Vector3.Normalize(along), Vector3.Normalize(across)).Length() > MinPalmSine))
+                return $"the {side} hand's knuckles lie on a line with its wrist (no palm plane to model)";
+            return null;
+        }
+
+        // The palm's plane needs the knuckles 1 mm apart and the little-to-index line at least 11.5° (sin 0.2) off the hand.
+        private const float MinPalmLength = 0.001f, MinPalmSine = 0.2f;
 
         /// <summary>
         /// As <see cref="CanModel(HumanoidMap, BodySide, out string)"/>, for a rig known only by which humanoid bones it has

@@ -385,7 +385,7 @@ namespace AvatarGo.Core
             state.Fingers.Clear();
             state.Holding = false;
             if (controller == null) state.NoFingerIkReason = "no controller profile is set for this hand";
-            else if (HandModel.CanModel(_calibrator.ScaledAvatar, side, out string reason))
+            else if (HandModel.CanModel(_calibrator.ScaledAvatar, side, _calibrator.AvatarPose, out string reason))
             {
                 _hands[s] = new HandModel(_calibrator.ScaledAvatar, side, _calibrator.AvatarPose); // the T-pose's straight fingers open the hand
                 _fingers[s] = new FingerSolver(_hands[s], controller);

@@ -12,6 +12,36 @@ namespace AvatarGo.Core.Tests
         private static HumanoidMap MixamoHand() =>
             HumanoidNaming.Detect(BvhReader.ReadFile(TestData.Mocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true }).Skeleton);
 
+        /// <summary>
+        /// A hand whose knuckles give no palm plane (the index, middle and little bases on a line with the wrist, or the index
+        /// and little bases at one point) is not modelled: <see cref="HandModel.CanModel(HumanoidMap, BodySide, SkeletonPose, out string)"/>
+        /// says why and the constructor refuses it (found in review: the palm's axes were normalised from zero vectors and
+        /// every finger, the grip and the wrist's place on the controller became NaN).
+        /// </summary>
+        [Test]
+        public void AHandWithoutAPalmPlaneIsNotModelled()
+        {
+            HumanoidMap map = MixamoHand();
+            var pose = new SkeletonPose(map.Skeleton);
+            map.Skeleton.GetRestLocal(pose.Local);
+            pose.UpdateWorld();
+            Assert.That(HandModel.CanModel(map, BodySide.Left, pose, out string reason), Is.True, reason);
+            int wrist = map[HumanoidBone.LeftHand];
+            int index = map[HumanoidBones.Finger(BodySide.Left, Finger.Index, Phalanx.Proximal)];
+            int middle = map[HumanoidBones.Finger(BodySide.Left, Finger.Middle, Phalanx.Proximal)];
+            int little = map[HumanoidBones.Finger(BodySide.Left, Finger.Little, Phalanx.Proximal)];
+            Vector3 w = pose.World[wrist].Position, along = pose.World[middle].Position - w;
+            pose.World[index] = pose.World[index].WithPosition(w + 1.1f * along);
+            pose.World[little] = pose.World[little].WithPosition(w + 0.9f * along);
+            Assert.That(HandModel.CanModel(map, BodySide.Left, pose, out reason), Is.False);
+            Assert.That(reason, Does.Contain("on a line"));
+            Assert.Throws<ArgumentException>(() => new HandModel(map, BodySide.Left, pose));
+            pose.World[little] = pose.World[index];
+            Assert.That(HandModel.CanModel(map, BodySide.Left, pose, out reason), Is.False);
+            Assert.That(reason, Does.Contain("at one point"));
+            Assert.That(HandModel.CanModel(map, BodySide.Right, pose, out reason), Is.True, "the other hand is as it was");
+        }
+
         private static IEnumerable<ControllerProfile> Profiles()
         {
             string dir = Path.Combine(TestData.PackageRoot ?? ".", "Runtime", "ControllerProfiles");
