@@ -141,7 +141,7 @@ namespace AvatarGo
             _parsed[s] = asset;
             try
             {
-                _profiles[s] = ControllerProfile.Parse(asset.text);
+                _profiles[s] = ControllerProfile.Parse(asset.text, asset.name);
             }
             catch (FormatException e)
             {

@@ -87,11 +87,24 @@ namespace AvatarGo.Core
                     case "capsule": list.Add(SdfShape.Capsule(Point(s, "a"), Point(s, "b"), Length(s, "radius"))); break;
                     case "sphere": list.Add(SdfShape.Sphere(Point(s, "centre"), Length(s, "radius"))); break;
                     case "box": list.Add(SdfShape.Box(Point(s, "centre"), HalfExtents(s), Rotation(s))); break;
-                    case "roundedBox": list.Add(SdfShape.RoundedBox(Point(s, "centre"), HalfExtents(s), Length(s, "radius"), Rotation(s))); break;
+                    case "roundedBox":
+                        Vector3 half = HalfExtents(s);
+                        float rounding = Length(s, "radius");
+                        // The outer half extents are the box's: a rounding larger than the smallest would make it a sphere.
+                        if (rounding > Math.Min(half.X, Math.Min(half.Y, half.Z)))
+                            throw s["radius"].Error($"the rounding radius ({rounding.ToString(CultureInfo.InvariantCulture)} m) is larger than the box's smallest half extent ({Math.Min(half.X, Math.Min(half.Y, half.Z)).ToString(CultureInfo.InvariantCulture)} m).");
+                        list.Add(SdfShape.RoundedBox(Point(s, "centre"), half, rounding, Rotation(s)));
+                        break;
                     default: throw s["type"].Error($"Unknown shape type '{JsonNode.Printable(type)}' (capsule, sphere, box, roundedBox).");
                 }
             }
-            return new ControllerProfile(root.GetString("name"), root.GetString("displayName"), new SdfComposite(list), Point(root, "trigger"), Point(root, "thumbRest"));
+            var shape = new SdfComposite(list);
+            // The grip is built around the origin (the handle's axis): it must lie inside the controller, as a CAD export
+            // with its origin at the handle's end does not (the hand then never reaches the surface and stays open).
+            float origin = shape.Distance(Vector3.Zero);
+            if (!(origin < 0f))
+                throw shapes.Error($"the profile's origin must lie inside its shapes, on the handle's axis; it is {origin.ToString("0.000", CultureInfo.InvariantCulture)} m outside them.");
+            return new ControllerProfile(root.GetString("name"), root.GetString("displayName"), shape, Point(root, "trigger"), Point(root, "thumbRest"));
         }
 
         /// <summary>Reads and parses a profile file; errors read <c>FILE:LINE: problem</c>.</summary>

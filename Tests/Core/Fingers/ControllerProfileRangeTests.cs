@@ -49,6 +49,22 @@ namespace AvatarGo.Core.Tests
             AssertRefused(json, "\"a\": [", "'a' has a coordinate");
         }
 
+        /// <summary>
+        /// A profile whose origin lies outside its shapes (a CAD export with the origin at the handle's end) is refused, as is a
+        /// rounded box whose rounding exceeds its smallest half extent (it would be a sphere): found in review, both parsed,
+        /// and the first left the hand open for good (its palm never reached the surface).
+        /// </summary>
+        [Test]
+        public void AnOriginOutsideTheShapesAndAnOverRoundedBoxAreRefused()
+        {
+            string wand = Wand();
+            string moved = wand.Replace("\"a\": [0, -0.075, -0.004]", "\"a\": [0.2, -0.075, -0.004]").Replace("\"b\": [0, 0.035, 0.004]", "\"b\": [0.2, 0.035, 0.004]")
+                .Replace("\"centre\": [0, 0.06, 0.0]", "\"centre\": [0.2, 0.06, 0.0]");
+            Assume.That(moved, Is.Not.EqualTo(wand));
+            AssertRefused(moved, "\"shapes\"", "origin must lie inside its shapes");
+            AssertRefused(wand.Replace("\"radius\": 0.012", "\"radius\": 0.05"), "\"radius\": 0.05", "larger than the box's smallest half extent");
+        }
+
         [Test]
         public void BoxesNeedSmallPositiveHalfExtentsAndAnglesWithinAFullTurn()
         {
