@@ -232,18 +232,37 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// Creates a clip from local poses of <paramref name="skeleton"/> (Unity's frame, metres), for writing:
-        /// roots get 6 channels (Xposition Yposition Zposition Zrotation Xrotation Yrotation), other joints 3
-        /// rotation channels, End Sites none. Lengths are divided by <paramref name="metresPerUnit"/>.
+        /// roots, and joints whose translation leaves their rest offset in some frame (hips placed under a floor-level root),
+        /// get 6 channels (Xposition Yposition Zposition Zrotation Xrotation Yrotation), other joints 3 rotation channels,
+        /// End Sites none. Lengths are divided by <paramref name="metresPerUnit"/>.
         /// </summary>
         public static BvhClip FromPoses(Skeleton skeleton, IReadOnlyList<RigidPose[]> localFrames, float frameTime, float metresPerUnit = 1f)
         {
             if (skeleton == null) throw new ArgumentNullException(nameof(skeleton));
+            if (localFrames == null) throw new ArgumentNullException(nameof(localFrames));
             var channels = new BvhChannel[skeleton.JointCount][];
             for (int j = 0; j < channels.Length; j++)
                 channels[j] = skeleton.IsEndSite(j) ? Array.Empty<BvhChannel>()
-                    : skeleton.GetParent(j) < 0 ? new[] { BvhChannel.Xposition, BvhChannel.Yposition, BvhChannel.Zposition, BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation }
+                    : skeleton.GetParent(j) < 0 || Translates(skeleton, localFrames, j, metresPerUnit) ? new[] { BvhChannel.Xposition, BvhChannel.Yposition, BvhChannel.Zposition, BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation }
                     : new[] { BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation };
             return FromPoses(skeleton, localFrames, frameTime, metresPerUnit, channels);
+        }
+
+        // Whether a joint's local translation leaves its rest offset in some frame: the solved avatar's hips under a
+        // floor-level root are placed in the world, so their translation moves (with only rotation channels, writing such
+        // a solve threw).
+        // (In file units, with half the tolerance the writer allows a joint without position channels.)
+        private static bool Translates(Skeleton skeleton, IReadOnlyList<RigidPose[]> localFrames, int joint, float metresPerUnit)
+        {
+            if (!(metresPerUnit > 0f)) return false; // refused by the writer
+            Vector3 rest = skeleton.GetRestLocal(joint).Position;
+            float tolerance = 0.5e-5f * Math.Max(1f, rest.Length() / metresPerUnit);
+            for (int f = 0; f < localFrames.Count; f++)
+            {
+                RigidPose[] frame = localFrames[f];
+                if (frame != null && joint < frame.Length && Vector3.Distance(frame[joint].Position, rest) / metresPerUnit > tolerance) return true;
+            }
+            return false;
         }
 
         /// <summary>

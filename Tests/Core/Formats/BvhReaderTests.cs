@@ -155,6 +155,42 @@ namespace AvatarGo.Core.Tests
             }
         }
 
+        /// <summary>
+        /// A joint below the root whose translation moves (a solved avatar's hips under a floor-level root) gets position
+        /// channels, and the poses round-trip (found in review: `evaluate --bvh-out` threw "moves away from its OFFSET" on
+        /// such a rig after the whole run).
+        /// </summary>
+        [Test]
+        public void AJointThatTranslatesBelowTheRootGetsPositionChannels()
+        {
+            BvhClip clip = Topology.WithFloorRoot(BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true }));
+            Skeleton s = clip.Skeleton;
+            int hips = s.IndexOf("Hips");
+            Assume.That(s.GetParent(hips), Is.GreaterThanOrEqualTo(0), "the hips hang from the floor root");
+            var frames = new List<RigidPose[]>();
+            for (int f = 0; f < 30; f++)
+            {
+                var local = new RigidPose[s.JointCount];
+                clip.GetLocalPoses(f, local);
+                local[hips] = local[hips].WithPosition(local[hips].Position + new Vector3(0.01f * f, 0f, 0f)); // the hips walk
+                frames.Add(local);
+            }
+            BvhClip written = BvhClip.FromPoses(s, frames, clip.FrameTime, 0.01f);
+            Assert.That(written.GetChannels(hips).Count, Is.EqualTo(6), "the hips' translation is written");
+            Assert.That(written.GetChannels(s.IndexOf("Chest")).Count, Is.EqualTo(3), "a joint that only turns keeps its three rotation channels");
+            var sw = new StringWriter();
+            BvhWriter.Write(sw, written);
+            BvhClip back = BvhReader.Read(new StringReader(sw.ToString()), "translating", new BvhReadOptions { Scale = 0.01f });
+            var l1 = new RigidPose[s.JointCount]; var w1 = new RigidPose[l1.Length];
+            var w2 = new RigidPose[l1.Length];
+            for (int f = 0; f < frames.Count; f++)
+            {
+                s.ComputeWorld(frames[f], w1);
+                back.GetWorldPoses(f, l1, w2);
+                Approx.Near(w1[hips].Position, w2[hips].Position, 5e-5f, $"frame {f} hips");
+            }
+        }
+
         [TestCase(0, 0, 0)]
         [TestCase(2, 0, 1)]
         [TestCase(0, 1, 2)]

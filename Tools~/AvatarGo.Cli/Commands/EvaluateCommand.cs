@@ -108,6 +108,12 @@ public sealed class EvaluateCommand : ICommand
             stderr.WriteLine($"avatargo evaluate: calibration did not complete: {report.CalibrationMessage}");
             return 1;
         }
+        if (report.Frames == 0)
+        {
+            // Nothing to measure (the session ends on the walk-in press, a truncated recording): every figure would be NaN.
+            stderr.WriteLine("avatargo evaluate: the session ends when the calibration completes: no frame was compared");
+            return 1;
+        }
         if (refine && report.Refinement == null)
         {
             stderr.WriteLine($"avatargo evaluate: the session ended within the {exerciseSeconds.ToString(CultureInfo.InvariantCulture)} s of the exercise: nothing was refined");

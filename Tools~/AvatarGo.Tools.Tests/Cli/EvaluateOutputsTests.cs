@@ -110,4 +110,43 @@ public class EvaluateOutputsTests
         Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
         return r.Stdout.TrimEnd().Split('\n').Skip(1).Select(l => l.Split(',').Skip(1).Select(s => double.Parse(s, CultureInfo.InvariantCulture)).ToArray()).ToArray();
     }
+
+    /// <summary>
+    /// A session that ends when the calibration completes has no frame to compare: `evaluate` says so and exits 1, and
+    /// writes no output (found in review: it printed NaN, and `--json` then failed on the NaN after the table).
+    /// </summary>
+    [Test]
+    public void ASessionEndingAtTheCalibrationIsAClearErrorNotNaN()
+    {
+        string full = Temp(".agsession"), cut = Temp(".agsession"), json = Temp(".json");
+        try
+        {
+            Assert.That(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--out", full, "--seed", "2").ExitCode, Is.EqualTo(0));
+            using (var reader = SessionReader.Open(full))
+            {
+                var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
+                SessionWriter.WriteFile(cut, reader.Header, writer =>
+                {
+                    SessionFrame frame = reader.CreateFrame();
+                    while (reader.ReadFrame(frame))
+                    {
+                        writer.WriteFrame(frame);
+                        pipeline.Update(frame);
+                        if (pipeline.State == CalibrationState.Calibrated) break;
+                    }
+                });
+            }
+            var r = CliRunner.Run("evaluate", cut, "--json", json);
+            Assert.That(r.ExitCode, Is.EqualTo(1), r.ToString());
+            Assert.That(r.Stderr, Does.Contain("no frame was compared"));
+            Assert.That(r.Stdout, Does.Not.Contain("NaN"));
+            Assert.That(File.Exists(json), Is.False, "nothing written");
+        }
+        finally
+        {
+            File.Delete(full);
+            File.Delete(cut);
+            File.Delete(json);
+        }
+    }
 }
