@@ -54,7 +54,8 @@ namespace AvatarGo.Simulation
         private static EvaluationReport Run(SessionReader reader, PipelineSettings settings, HumanoidMap avatar, Action<SelfAvatarPipeline, SessionFrame> onFrame,
             DisturbanceOptions disturbance, float exerciseSeconds = 0f, bool refine = false)
         {
-            double exerciseEnd = double.NaN;
+            double exerciseEnd = double.NaN; // when the exercise ends (NaN: none)
+            bool exerciseOver = false;
             if (reader == null) throw new ArgumentNullException(nameof(reader));
             if (settings == null) throw new ArgumentNullException(nameof(settings));
             SessionHeader header = reader.Header;
@@ -107,13 +108,19 @@ namespace AvatarGo.Simulation
                     report.ExerciseFrames++;
                     continue;
                 }
-                if (pipeline.IsRefining)
+                if (!double.IsNaN(exerciseEnd) && !exerciseOver)
                 {
-                    report.Refinement = pipeline.EndRefinement();
-                    scaled = pipeline.ScaledAvatar;
-                    report.AvatarMeasurements = ProportionFitter.MeasureSkeleton(scaled);
-                    report.Profile = pipeline.ActiveProfile;
-                    continue; // this frame was solved on the avatar before; the next one is the refined avatar's
+                    // The first frame after the exercise, with or without refinement, so that the same frames are scored:
+                    // refined, it was solved on the avatar before, and the next one is the refined avatar's.
+                    exerciseOver = true;
+                    if (pipeline.IsRefining)
+                    {
+                        report.Refinement = pipeline.EndRefinement();
+                        scaled = pipeline.ScaledAvatar;
+                        report.AvatarMeasurements = ProportionFitter.MeasureSkeleton(scaled);
+                        report.Profile = pipeline.ActiveProfile;
+                    }
+                    continue;
                 }
                 SkeletonPose pose = pipeline.Pose;
                 if (pipeline.LastSwapTime == frame.Time) report.RoleSwaps++;

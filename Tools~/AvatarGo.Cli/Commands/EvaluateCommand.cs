@@ -17,7 +17,7 @@ public sealed class EvaluateCommand : ICommand
         avatargo evaluate SESSION [--mode exact|fixed] [--scale-mode uniform|fitted] [--avatar FILE] [--leg-scale S] [--arm-scale S]
                          [--controller NAME|none] [--grip hold|open|point|input] [--hands palm|calibrated] [--json OUT]
                          [--knee-hint MODEL] [--elbow-hint MODEL] [--positions OUT.csv] [--bvh-out OUT.bvh] [--plot OUT.png]
-                         [--refine [--exercise-seconds S]]
+                         [--refine] [--exercise-seconds S]
 
         Replays SESSION through the whole pipeline (SelfAvatarPipeline: T-pose identification, scaling,
         walk-in offsets, body IK, hands on the controllers, finger IK) and compares the avatar (the
@@ -58,7 +58,8 @@ public sealed class EvaluateCommand : ICommand
                                "refinement") per limb the residual and the length before and after and whether it
                                changed, and why (the legs are reported, never refined). Not with the disturbances
                                or --positions / --bvh-out / --plot
-          --exercise-seconds S the exercise's length (default 8; the session's, as simulated)
+          --exercise-seconds S the exercise's length (default 8; the session's, as simulated); without --refine those
+                               seconds are not scored either, so the figures compare with --refine's
         """ + "\n" + EvaluationOutputs.Help + "\n" + """
         Proportions: the wearer's true lengths (from the session's skeleton), the measured ones with their uncertainty,
         and the calibrated avatar's; the frames in which a hand could not reach its controller, and of those the ones
@@ -87,10 +88,14 @@ public sealed class EvaluateCommand : ICommand
         DisturbanceOptions disturbance = Disturbance(a);
         EvaluationOutputs outputs = EvaluationOutputs.FromArgs(a);
         bool refine = a.Flag("refine");
-        double exerciseSeconds = a.Double("exercise-seconds", 8);
+        double exerciseArgument = a.Double("exercise-seconds", double.NaN);
+        // With --exercise-seconds alone the exercise is not scored either, so the figures compare with --refine's (before,
+        // the option was ignored and the arm circles and squats were scored).
+        bool exercise = refine || !double.IsNaN(exerciseArgument);
+        double exerciseSeconds = double.IsNaN(exerciseArgument) ? 8 : exerciseArgument;
         a.ThrowOnUnknown(1);
-        if (refine && (disturbance != null || outputs.IsRecording)) throw new UsageException("--refine does not combine with disturbances or --positions / --bvh-out / --plot");
-        if (refine && !(exerciseSeconds > 0 && exerciseSeconds <= 60)) throw new UsageException("--exercise-seconds must be more than 0 and at most 60");
+        if (exercise && (disturbance != null || outputs.IsRecording)) throw new UsageException("--refine and --exercise-seconds do not combine with disturbances or --positions / --bvh-out / --plot");
+        if (exercise && !(exerciseSeconds > 0 && exerciseSeconds <= 60)) throw new UsageException("--exercise-seconds must be more than 0 and at most 60");
         if (!(legScale > 0.5f && legScale < 2f) || !(armScale > 0.5f && armScale < 2f)) throw new UsageException("limb scales must be between 0.5 and 2");
         EvaluationReport report;
         using (SessionReader reader = SessionReader.Open(path))
@@ -99,8 +104,8 @@ public sealed class EvaluateCommand : ICommand
                 ? CalibrateCommand.AvatarFrom(avatarFile)
                 : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no ground-truth skeleton; give --avatar FILE");
             if (legScale != 1f || armScale != 1f) avatar = Proportions.ScaleLimbs(avatar, legScale, armScale);
-            report = refine
-                ? SessionEvaluator.EvaluateExercise(reader, settings, avatar, (float)exerciseSeconds, true)
+            report = exercise
+                ? SessionEvaluator.EvaluateExercise(reader, settings, avatar, (float)exerciseSeconds, refine)
                 : outputs.Evaluate(reader, settings, avatar, disturbance);
         }
         if (report.Profile == null)

@@ -95,6 +95,7 @@ public class PipelineCommandTests
             StringAssert.Contains("left arm", e.Stdout);
             StringAssert.Contains("kept (legs are not identifiable)", e.Stdout);
             using var doc = JsonDocument.Parse(File.ReadAllText(json));
+            int refinedFrames = doc.RootElement.GetProperty("frames").GetInt32();
             var r = doc.RootElement.GetProperty("refinement");
             Assert.That(r.GetProperty("changed").GetBoolean(), Is.True);
             Assert.That(r.GetProperty("frames").GetInt32(), Is.GreaterThan(600), "8 s at 90 Hz");
@@ -113,6 +114,14 @@ public class PipelineCommandTests
             Assert.That(plain.ExitCode, Is.EqualTo(0), plain.Stderr);
             using var doc2 = JsonDocument.Parse(File.ReadAllText(json));
             Assert.That(doc2.RootElement.GetProperty("refinement").ValueKind, Is.EqualTo(JsonValueKind.Null));
+            Assert.That(doc2.RootElement.GetProperty("frames").GetInt32(), Is.GreaterThan(refinedFrames + 600), "plain: the exercise is scored");
+            // With --exercise-seconds alone the exercise is not scored, and the same frames as --refine's are (found in
+            // review: the option was ignored without --refine, and the frame the refinement ends on was scored only then).
+            var unrefined = CliRunner.Run("evaluate", session, "--exercise-seconds", "8", "--json", json);
+            Assert.That(unrefined.ExitCode, Is.EqualTo(0), unrefined.Stderr);
+            using var doc3 = JsonDocument.Parse(File.ReadAllText(json));
+            Assert.That(doc3.RootElement.GetProperty("frames").GetInt32(), Is.EqualTo(refinedFrames), "the frames --refine scores");
+            Assert.That(doc3.RootElement.GetProperty("refinement").ValueKind, Is.EqualTo(JsonValueKind.Null));
             var bad = CliRunner.Run("evaluate", session, "--refine", "--dropout", "0.1");
             Assert.That(bad.ExitCode, Is.EqualTo(2), "--refine with disturbances is refused");
         }
