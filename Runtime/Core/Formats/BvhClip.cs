@@ -391,14 +391,19 @@ namespace AvatarGo.Core
             return new Vector3((float)(a * toDeg), (float)(b * toDeg), (float)(c * toDeg));
         }
 
+        // The rotation matrix of q, normalised in double (s = 2 / |q|²): a float quaternion's norm is off by up to ~1e-7, which
+        // the 1 - 2(y² + z²) form adds to the diagonal, and near gimbal lock the Euler angles read from entries of size
+        // cos(b) would magnify it (found in review; a rebased joint could then move by more than 0.01 mm on a metre).
         private static double[,] Matrix(Quaternion q)
         {
             double x = q.X, y = q.Y, z = q.Z, w = q.W;
+            double n = x * x + y * y + z * z + w * w;
+            double s = n > 0 ? 2.0 / n : 0.0;
             return new double[,]
             {
-                { 1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w) },
-                { 2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w) },
-                { 2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y) },
+                { 1 - s * (y * y + z * z), s * (x * y - z * w), s * (x * z + y * w) },
+                { s * (x * y + z * w), 1 - s * (x * x + z * z), s * (y * z - x * w) },
+                { s * (x * z - y * w), s * (y * z + x * w), 1 - s * (x * x + y * y) },
             };
         }
 
