@@ -50,6 +50,8 @@ namespace AvatarGo.Simulation
         /// (<paramref name="root"/> to <paramref name="end"/>), from the wearer's bend direction (<paramref name="middle"/>'s
         /// offset from that axis) to the avatar's (its middle joint's offset from its own limb axis). NaN when the wearer's
         /// limb bends less than <see cref="MinBendDegrees"/>; 180 when the avatar's limb is straight where the wearer's bends.
+        /// The sign is right-handed about that axis on every limb, so it is mirror-handed: the same anatomical error (both
+        /// elbows swivelled outward) reads positive on one side and negative on the other.
         /// </summary>
         public static double SignedAngleDegrees(Vector3 root, Vector3 middle, Vector3 end, Vector3 avatarRoot, Vector3 avatarMiddle, Vector3 avatarEnd)
         {

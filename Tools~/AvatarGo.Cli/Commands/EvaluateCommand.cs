@@ -66,7 +66,8 @@ public sealed class EvaluateCommand : ICommand
         in which the wearer's own arm was not fully stretched (under 98 % of its length).
         Knees and elbows: the bend-plane angle error (wearer's vs avatar's bend direction about the limb's axis),
         median / p95 / max in degrees and the share of frames beyond 90 deg ("flipped"), frames in which the
-        wearer's limb bends at least 15 deg.
+        wearer's limb bends at least 15 deg; the signed median is right-handed about each limb's root-to-end axis,
+        so the same anatomical error reads with opposite signs on the left and right limbs.
         Exit codes: 0 ok, 1 unreadable session or calibration failed, 2 bad arguments.
         """;
 
