@@ -99,17 +99,20 @@ namespace AvatarGo.Core.Tests
             Assert.That(checkedOnce, Is.True, "the loss ended within the session");
         }
 
+        // The lost left foot at the end of its loss: on the floor at its calibrated height, under the hips.
+        private static void AssertTheLeftFootSettled(SelfAvatarPipeline p)
+        {
+            Vector3 ankle = p.Pose.World[p.ScaledAvatar[HumanoidBone.LeftFoot]].Position;
+            Vector3 hips = p.Pose.World[p.ScaledAvatar[HumanoidBone.Hips]].Position;
+            float ankleAtCalibration = p.Profile.JointAtCalibration(DeviceRole.LeftFoot).Position.Y - p.Profile.FloorHeight;
+            Assert.That(ankle.Y - p.Profile.FloorHeight, Is.EqualTo(ankleAtCalibration).Within(0.03f), "on the floor (m)");
+            Assert.That(new Vector2(ankle.X - hips.X, ankle.Z - hips.Z).Length(), Is.LessThan(0.3f), "under the hips (m)");
+        }
+
         [Test]
         public void ALostFootSettlesUnderTheHipsOnTheFloor()
         {
-            LoseFor(DeviceRole.LeftFoot, 2.0, 2.5, (p, f) =>
-            {
-                Vector3 ankle = p.Pose.World[p.ScaledAvatar[HumanoidBone.LeftFoot]].Position;
-                Vector3 hips = p.Pose.World[p.ScaledAvatar[HumanoidBone.Hips]].Position;
-                float ankleAtCalibration = p.Profile.JointAtCalibration(DeviceRole.LeftFoot).Position.Y - p.Profile.FloorHeight;
-                Assert.That(ankle.Y - p.Profile.FloorHeight, Is.EqualTo(ankleAtCalibration).Within(0.03f), "on the floor (m)");
-                Assert.That(new Vector2(ankle.X - hips.X, ankle.Z - hips.Z).Length(), Is.LessThan(0.3f), "under the hips (m)");
-            });
+            LoseFor(DeviceRole.LeftFoot, 2.0, 2.5, (p, f) => AssertTheLeftFootSettled(p));
         }
 
         /// <summary>
@@ -122,14 +125,7 @@ namespace AvatarGo.Core.Tests
         [TestCase(double.NegativeInfinity)]
         public void ALostFootSettlesEvenWhenItsFirstFrameHasNoTime(double time)
         {
-            LoseFor(DeviceRole.LeftFoot, 2.0, 2.5, (p, f) =>
-            {
-                Vector3 ankle = p.Pose.World[p.ScaledAvatar[HumanoidBone.LeftFoot]].Position;
-                Vector3 hips = p.Pose.World[p.ScaledAvatar[HumanoidBone.Hips]].Position;
-                float ankleAtCalibration = p.Profile.JointAtCalibration(DeviceRole.LeftFoot).Position.Y - p.Profile.FloorHeight;
-                Assert.That(ankle.Y - p.Profile.FloorHeight, Is.EqualTo(ankleAtCalibration).Within(0.03f), "on the floor (m)");
-                Assert.That(new Vector2(ankle.X - hips.X, ankle.Z - hips.Z).Length(), Is.LessThan(0.3f), "under the hips (m)");
-            }, time);
+            LoseFor(DeviceRole.LeftFoot, 2.0, 2.5, (p, f) => AssertTheLeftFootSettled(p), time);
         }
 
         [Test]
