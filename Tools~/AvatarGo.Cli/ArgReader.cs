@@ -57,12 +57,17 @@ public sealed class ArgReader
         return _options.TryGetValue(name, out string v) ? v : fallback;
     }
 
+    private const double MaxMagnitude = 1e12;
+
     public double Double(string name, double fallback)
     {
         _read.Add(name);
         if (!_options.TryGetValue(name, out string v)) return fallback;
         if (!double.TryParse(v, NumberStyles.Float, CultureInfo.InvariantCulture, out double d) || double.IsNaN(d) || double.IsInfinity(d))
             throw new UsageException($"--{name} expects a number, got '{v}'");
+        // No option takes more than this (fuzz inputs up to a trillion; millimetres, degrees, seconds, rates); beyond a float's range a value
+        // became infinite where a command narrowed it and failed later, as an unreadable input (exit 1), not a bad argument.
+        if (Math.Abs(d) > MaxMagnitude) throw new UsageException($"--{name} expects a number within ±{MaxMagnitude.ToString(CultureInfo.InvariantCulture)}, got '{v}'");
         return d;
     }
 

@@ -48,4 +48,18 @@ public class ProgramTests
         Assert.That(r.ExitCode, Is.EqualTo(2));
         StringAssert.Contains("unknown option --bogus", r.Stderr);
     }
+
+    /// <summary>
+    /// A number beyond any option's range is a bad argument (exit 2) naming the option, before anything is read (found in
+    /// review: `--noise-deg 1e39` or `--twist 1e39` became infinite where the command narrowed it to a float and failed
+    /// later as an unreadable input, exit 1).
+    /// </summary>
+    [TestCase("simulate", "--bvh", "x.bvh", "--out", "y.agsession", "--noise-deg", "1e39")]
+    [TestCase("bvh", "rebase", "x.bvh", "y.bvh", "--rest", "x-along", "--twist", "1e39")]
+    public void ANumberBeyondEveryOptionsRangeIsAUsageError(params string[] args)
+    {
+        var r = CliRunner.Run(args);
+        Assert.That(r.ExitCode, Is.EqualTo(2), r.ToString());
+        StringAssert.Contains("expects a number within", r.Stderr);
+    }
 }
