@@ -324,10 +324,19 @@ namespace AvatarGo.Core
 
         private static Vector3 TipOf(Skeleton s, RigidPose[] world, int j1, int j2)
         {
-            for (int c = j2 + 1; c < s.JointCount; c++)
-                if (s.GetParent(c) == j2) return world[c].RelativeTo(world[j2]).Position;
-            // No end point: extrapolate the last phalanx with the length of the previous one, times 0.8.
             Vector3 d = world[j2].Position - world[j1].Position;
+            // The farthest child of the last phalanx marks its tip, unless it is a stub (a zero-length End Site, a nail or
+            // helper bone): shorter than 0.3 of the phalanx before, it would put the tip at the joint and the last phalanx
+            // into the controller.
+            Vector3 tip = Vector3.Zero;
+            for (int c = j2 + 1; c < s.JointCount; c++)
+                if (s.GetParent(c) == j2)
+                {
+                    Vector3 child = world[c].RelativeTo(world[j2]).Position;
+                    if (child.LengthSquared() > tip.LengthSquared()) tip = child;
+                }
+            if (tip.Length() >= 0.3f * d.Length()) return tip;
+            // No end point: extrapolate the last phalanx with the length of the previous one, times 0.8.
             return Vector3.Transform(d * 0.8f, Quaternion.Conjugate(world[j2].Rotation));
         }
     }

@@ -42,6 +42,32 @@ namespace AvatarGo.Core.Tests
             Assert.That(HandModel.CanModel(map, BodySide.Right, pose, out reason), Is.True, "the other hand is as it was");
         }
 
+        /// <summary>
+        /// A fingertip is not taken from a stub under the last phalanx (a zero-length End Site, a nail bone): the tip is then
+        /// extrapolated from the phalanx before, as for a finger without an end (found in review: the tip sat at the joint,
+        /// so the last phalanx went into the controller).
+        /// </summary>
+        [Test]
+        public void AStubUnderTheLastPhalanxIsNotTheFingertip()
+        {
+            HumanoidMap map = MixamoHand();
+            var pose = new SkeletonPose(map.Skeleton);
+            map.Skeleton.GetRestLocal(pose.Local);
+            pose.UpdateWorld();
+            int j1 = map[HumanoidBones.Finger(BodySide.Left, Finger.Index, Phalanx.Intermediate)];
+            int j2 = map[HumanoidBones.Finger(BodySide.Left, Finger.Index, Phalanx.Distal)];
+            int end = -1;
+            for (int c = j2 + 1; c < map.Skeleton.JointCount && end < 0; c++) if (map.Skeleton.GetParent(c) == j2) end = c;
+            Assume.That(end, Is.GreaterThan(0), "the Mixamo index finger ends in an End Site");
+            float phalanx = Vector3.Distance(pose.World[j1].Position, pose.World[j2].Position);
+            float withEnd = new HandModel(map, BodySide.Left, pose).TipLocal[(int)Finger.Index].Length();
+            pose.World[end] = pose.World[end].WithPosition(pose.World[j2].Position + (pose.World[end].Position - pose.World[j2].Position) * 0.01f);
+            float withStub = new HandModel(map, BodySide.Left, pose).TipLocal[(int)Finger.Index].Length();
+            TestContext.WriteLine($"tip {withEnd * 1000:F1} mm from the last joint with its End Site, {withStub * 1000:F1} mm with a 1 % stub (phalanx before {phalanx * 1000:F1} mm)");
+            Assert.That(withEnd, Is.GreaterThan(0.3f * phalanx), "the End Site marks the tip");
+            Assert.That(withStub, Is.EqualTo(0.8f * phalanx).Within(1e-4f), "a stub: extrapolated, 0.8 of the phalanx before");
+        }
+
         private static IEnumerable<ControllerProfile> Profiles()
         {
             string dir = Path.Combine(TestData.PackageRoot ?? ".", "Runtime", "ControllerProfiles");
