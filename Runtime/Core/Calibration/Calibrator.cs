@@ -236,7 +236,7 @@ namespace AvatarGo.Core
             // Inside the avatar: the offsets measured now would otherwise take in however far the wearer stands from it.
             Vector3 hmd = _averages[_deviceByRole[DeviceRole.Head]].Position;
             Vector3 eyes = TPoser.EyePosition(ScaledAvatar, AvatarPose, Profile.Placement.Rotation);
-            float apart = new Vector2(hmd.X - eyes.X, hmd.Z - eyes.Z).Length();
+            float apart = Vectors.HorizontalDistance(hmd, eyes);
             if (apart > MaxWalkInDistance)
                 return Keep(CalibrationError.NotInsideAvatar, FormattableString.Invariant($"the headset is {apart:0.00} m from the avatar's eyes"));
             string note = Remeasure();

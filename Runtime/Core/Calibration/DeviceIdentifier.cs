@@ -108,7 +108,7 @@ namespace AvatarGo.Core
                 foreach (int t in liveTrackers)
                 {
                     float height = averages[t].Position.Y - floor;
-                    float score = Math.Abs(height - 0.57f * eyeHeight) + HorizontalDistance(averages[t].Position, head.Position);
+                    float score = Math.Abs(height - 0.57f * eyeHeight) + Vectors.HorizontalDistance(averages[t].Position, head.Position);
                     if (height > 0.25f * eyeHeight && score < best) { best = score; pelvis = t; }
                 }
                 if (pelvis < 0) { detail = "no tracker is at waist height"; return CalibrationError.PelvisNotBetweenHeadAndFeet; }
@@ -138,8 +138,8 @@ namespace AvatarGo.Core
                 for (int j = i + 1; j < controllers.Count; j++)
                 {
                     Vector3 a = averages[controllers[i]].Position, b = averages[controllers[j]].Position;
-                    float spread = HorizontalDistance(a, b);
-                    float astride = HorizontalDistance(a, head) + HorizontalDistance(b, head) - spread;
+                    float spread = Vectors.HorizontalDistance(a, b);
+                    float astride = Vectors.HorizontalDistance(a, head) + Vectors.HorizontalDistance(b, head) - spread;
                     float score = spread - 2f * Math.Abs(a.Y - b.Y) - Math.Abs(0.5f * (a.Y + b.Y) - shoulderHeight) - astride;
                     if (score > best) { best = score; bestA = controllers[i]; bestB = controllers[j]; }
                 }
@@ -193,9 +193,8 @@ namespace AvatarGo.Core
 
         // Lower is better: height above the floor plus horizontal distance from the head; trackers the runtime calls feet first.
         private float FootScore(int t, ReadOnlySpan<WindowAverage> averages, float floor, Vector3 head) =>
-            averages[t].Position.Y - floor + HorizontalDistance(averages[t].Position, head)
+            averages[t].Position.Y - floor + Vectors.HorizontalDistance(averages[t].Position, head)
             - (_devices[t].RuntimeRole == DeviceRole.LeftFoot || _devices[t].RuntimeRole == DeviceRole.RightFoot ? 100f : 0f);
 
-        private static float HorizontalDistance(Vector3 a, Vector3 b) => new Vector2(a.X - b.X, a.Z - b.Z).Length();
     }
 }

@@ -44,8 +44,7 @@ namespace AvatarGo.Core
                 detail = $"the headset tilted {tilt:0}°";
                 return CalibrationError.HeadNotUpright;
             }
-            Vector3 between = averages[selection.ControllerA].Position - averages[selection.ControllerB].Position;
-            float spread = new Vector2(between.X, between.Z).Length();
+            float spread = Vectors.HorizontalDistance(averages[selection.ControllerA].Position, averages[selection.ControllerB].Position);
             if (spread < 0.7f * selection.EyeHeight)
             {
                 detail = $"hands {spread:0.00} m apart";
@@ -126,8 +125,8 @@ namespace AvatarGo.Core
             }
             // Horizontally: a tracker held out in a hand passes every height check (hands lowered toward the waist).
             Vector3 axis = 0.5f * (head + 0.5f * (averages[roles[DeviceRole.LeftFoot]].Position + averages[roles[DeviceRole.RightFoot]].Position));
-            float Off(Vector3 p) => new Vector2(p.X - axis.X, p.Z - axis.Z).Length();
-            float pelvisOff = Off(pelvisAt), handOff = Math.Min(Off(averages[roles[DeviceRole.LeftHand]].Position), Off(averages[roles[DeviceRole.RightHand]].Position));
+            float pelvisOff = Vectors.HorizontalDistance(pelvisAt, axis);
+            float handOff = Math.Min(Vectors.HorizontalDistance(averages[roles[DeviceRole.LeftHand]].Position, axis), Vectors.HorizontalDistance(averages[roles[DeviceRole.RightHand]].Position, axis));
             if (pelvisOff > PelvisOffAxisOfHandReach * handOff)
             {
                 detail = $"the waist tracker {pelvisOff:0.00} m from the body's axis, the hands {handOff:0.00} m";

@@ -34,6 +34,9 @@ namespace AvatarGo.Core
         /// <summary><paramref name="v"/> with its component along the unit vector <paramref name="normal"/> removed.</summary>
         public static Vector3 ProjectOnPlane(Vector3 v, Vector3 normal) => v - Vector3.Dot(v, normal) * normal;
 
+        /// <summary>The distance between <paramref name="a"/> and <paramref name="b"/> on the floor plane (y up ignored).</summary>
+        public static float HorizontalDistance(Vector3 a, Vector3 b) => new Vector2(a.X - b.X, a.Z - b.Z).Length();
+
         /// <summary>The unsigned angle between two vectors, in degrees (0 for a zero vector).</summary>
         public static float AngleDegrees(Vector3 a, Vector3 b)
         {

@@ -22,9 +22,7 @@ namespace AvatarGo.Core.Tests
         public void AHandWithoutAPalmPlaneIsNotModelled()
         {
             HumanoidMap map = MixamoHand();
-            var pose = new SkeletonPose(map.Skeleton);
-            map.Skeleton.GetRestLocal(pose.Local);
-            pose.UpdateWorld();
+            SkeletonPose pose = RestPose(map);
             Assert.That(HandModel.CanModel(map, BodySide.Left, pose, out string reason), Is.True, reason);
             int wrist = map[HumanoidBone.LeftHand];
             int index = map[HumanoidBones.Finger(BodySide.Left, Finger.Index, Phalanx.Proximal)];
@@ -51,9 +49,7 @@ namespace AvatarGo.Core.Tests
         public void AStubUnderTheLastPhalanxIsNotTheFingertip()
         {
             HumanoidMap map = MixamoHand();
-            var pose = new SkeletonPose(map.Skeleton);
-            map.Skeleton.GetRestLocal(pose.Local);
-            pose.UpdateWorld();
+            SkeletonPose pose = RestPose(map);
             int j1 = map[HumanoidBones.Finger(BodySide.Left, Finger.Index, Phalanx.Intermediate)];
             int j2 = map[HumanoidBones.Finger(BodySide.Left, Finger.Index, Phalanx.Distal)];
             int end = -1;
@@ -66,6 +62,15 @@ namespace AvatarGo.Core.Tests
             TestContext.WriteLine($"tip {withEnd * 1000:F1} mm from the last joint with its End Site, {withStub * 1000:F1} mm with a 1 % stub (phalanx before {phalanx * 1000:F1} mm)");
             Assert.That(withEnd, Is.GreaterThan(0.3f * phalanx), "the End Site marks the tip");
             Assert.That(withStub, Is.EqualTo(0.8f * phalanx).Within(1e-4f), "a stub: extrapolated, 0.8 of the phalanx before");
+        }
+
+        // The rig in its rest pose, world poses up to date (a pose to edit as a hand's open pose).
+        private static SkeletonPose RestPose(HumanoidMap map)
+        {
+            var pose = new SkeletonPose(map.Skeleton);
+            map.Skeleton.GetRestLocal(pose.Local);
+            pose.UpdateWorld();
+            return pose;
         }
 
         private static IEnumerable<ControllerProfile> Profiles()

@@ -224,19 +224,31 @@ namespace AvatarGo.Core.Tests
             Assert.That(bytes, Is.EqualTo(new long[bytes.Length]), "bytes allocated per window of 5 x 455 solves");
         }
 
-        // Frame 0 of mocapbank with the left hand's goal straight below its (unshrugged) shoulder, `beyond` metres farther
-        // than the arm reaches; the other parts at their true targets.
-        private static (FullBodyIk ik, SkeletonPose pose, BodyTargets targets, Truth truth) HangingArm(float beyond)
+        // Frame 0 of mocapbank at its true targets, solved as a single frame: the clavicle at its reference, so the shoulder is
+        // where it starts.
+        private static (FullBodyIk ik, SkeletonPose pose, BodyTargets targets, Truth truth) FirstFrameSolved()
         {
             var truth = new Truth("mocapbank_30fps.bvh");
             var ik = new FullBodyIk(truth.Map);
             var pose = new SkeletonPose(truth.Clip.Skeleton);
             var targets = new BodyTargets();
             truth.Targets(0, ref targets);
-            ik.Solve(in targets, pose); // single frame: the clavicle at its reference, so the shoulder is where it starts
+            ik.Solve(in targets, pose);
+            return (ik, pose, targets, truth);
+        }
+
+        // The left arm's length, shoulder to elbow to wrist, in the pose (m).
+        private static float LeftArmLength(SkeletonPose pose, Truth truth) =>
+            Vector3.Distance(pose.World[truth[HumanoidBone.LeftUpperArm]].Position, pose.World[truth[HumanoidBone.LeftLowerArm]].Position)
+            + Vector3.Distance(pose.World[truth[HumanoidBone.LeftLowerArm]].Position, pose.World[truth[HumanoidBone.LeftHand]].Position);
+
+        // Frame 0 of mocapbank with the left hand's goal straight below its (unshrugged) shoulder, `beyond` metres farther
+        // than the arm reaches; the other parts at their true targets.
+        private static (FullBodyIk ik, SkeletonPose pose, BodyTargets targets, Truth truth) HangingArm(float beyond)
+        {
+            var (ik, pose, targets, truth) = FirstFrameSolved();
             Vector3 shoulder = pose.World[truth[HumanoidBone.LeftUpperArm]].Position;
-            float arm = Vector3.Distance(shoulder, pose.World[truth[HumanoidBone.LeftLowerArm]].Position)
-                + Vector3.Distance(pose.World[truth[HumanoidBone.LeftLowerArm]].Position, pose.World[truth[HumanoidBone.LeftHand]].Position);
+            float arm = LeftArmLength(pose, truth);
             targets.LeftHand = new LimbTarget(new RigidPose(shoulder - Vector3.UnitY * (arm + beyond), targets.LeftHand.Goal.Rotation),
                 shoulder - Vector3.UnitY * (arm * 0.5f) - Vector3.UnitZ * 0.1f);
             return (ik, pose, targets, truth);
@@ -266,8 +278,7 @@ namespace AvatarGo.Core.Tests
             // Lowering the shoulder by 2 cm on a clavicle of length c lying about level takes about asin(0.02 / c).
             Assert.That(turn, Is.GreaterThan(0.5f * (float)(Math.Asin(0.02 / clavicle) * 180 / Math.PI)).And.LessThan(20f), "the least turn, not the largest");
             float reach = Vector3.Distance(shoulder, targets.LeftHand.Goal.Position);
-            float arm = Vector3.Distance(shoulder, pose.World[truth[HumanoidBone.LeftLowerArm]].Position)
-                + Vector3.Distance(pose.World[truth[HumanoidBone.LeftLowerArm]].Position, pose.World[truth[HumanoidBone.LeftHand]].Position);
+            float arm = LeftArmLength(pose, truth);
             Assert.That(reach, Is.EqualTo(arm).Within(0.001f), "the goal at the arm's full reach from the shrugged shoulder (m)");
 
             (ik, pose, targets, truth) = HangingArm(0.40f);
@@ -377,15 +388,9 @@ namespace AvatarGo.Core.Tests
         // (unshrugged) shoulder, `beyond` metres farther from the pivot than clavicle and arm reach together (negative: nearer).
         private static (FullBodyIk ik, SkeletonPose pose, BodyTargets targets, Truth truth) GoalAlongTheClavicle(float degreesOff, float beyond)
         {
-            var truth = new Truth("mocapbank_30fps.bvh");
-            var ik = new FullBodyIk(truth.Map);
-            var pose = new SkeletonPose(truth.Clip.Skeleton);
-            var targets = new BodyTargets();
-            truth.Targets(0, ref targets);
-            ik.Solve(in targets, pose);
+            var (ik, pose, targets, truth) = FirstFrameSolved();
             Vector3 pivot = pose.World[truth[HumanoidBone.LeftShoulder]].Position, shoulder = pose.World[truth[HumanoidBone.LeftUpperArm]].Position;
-            float arm = Vector3.Distance(shoulder, pose.World[truth[HumanoidBone.LeftLowerArm]].Position)
-                + Vector3.Distance(pose.World[truth[HumanoidBone.LeftLowerArm]].Position, pose.World[truth[HumanoidBone.LeftHand]].Position);
+            float arm = LeftArmLength(pose, truth);
             Vector3 along = Vector3.Normalize(shoulder - pivot);
             Vector3 off = Vector3.Transform(along, Rotations.AngleAxis(degreesOff, Vector3.Cross(along, Vector3.UnitY)));
             Vector3 goal = pivot + off * (Vector3.Distance(shoulder, pivot) + arm + beyond);
