@@ -26,7 +26,7 @@ namespace AvatarGo.Simulation
             if (bvhText == null) throw new ArgumentNullException(nameof(bvhText));
             if (path == null) throw new ArgumentNullException(nameof(path));
             BvhClip clip = BvhReader.Read(new StringReader(bvhText), sourceName ?? "clip", new BvhReadOptions { ToMetres = true });
-            HumanoidMap wearer = HumanoidNaming.Detect(clip.Skeleton);
+            HumanoidMap wearer = HumanoidDetection.Detect(clip, null, out _);
             wearer.RequireComplete(nameof(bvhText));
             var simulator = new SessionSimulator(clip, options ?? new SimulationOptions(), wearer);
             string folder = Path.GetDirectoryName(Path.GetFullPath(path));

@@ -22,7 +22,10 @@ namespace AvatarGo.Simulation
         private readonly HumanoidMap _map;
         private readonly SimulationOptions _options;
 
-        /// <summary>Prepares a simulation of <paramref name="clip"/> (lengths in metres) worn by its own skeleton.</summary>
+        /// <summary>
+        /// Prepares a simulation of <paramref name="clip"/> (lengths in metres) worn by its own skeleton, its humanoid bones
+        /// <paramref name="map"/> or, when null, found by <see cref="HumanoidDetection"/> (the names, else the structure).
+        /// </summary>
         /// <exception cref="ArgumentException">The clip has no frames or is too long to simulate, or its skeleton lacks a required humanoid bone.</exception>
         public SessionSimulator(BvhClip clip, SimulationOptions options = null, HumanoidMap map = null)
         {
@@ -31,7 +34,7 @@ namespace AvatarGo.Simulation
             _options = options ?? new SimulationOptions();
             double frames = (_options.TPoseSeconds + _options.WalkInSeconds + _options.ExerciseSeconds + _options.BlendSeconds + clip.FrameCount * (double)clip.FrameTime) * _options.Rate;
             if (!(frames < int.MaxValue)) throw new ArgumentException($"The clip is too long to simulate at {_options.Rate} Hz ({(long)Math.Min(frames, long.MaxValue)} frames).", nameof(clip));
-            _map = map ?? HumanoidNaming.Detect(clip.Skeleton);
+            _map = map ?? HumanoidDetection.Detect(clip, null, out _);
             _map.RequireComplete(nameof(clip));
             if (_options.MirrorBackwardClip && ClipConventions.LooksMirrored(clip, _map, out _, out _))
             {

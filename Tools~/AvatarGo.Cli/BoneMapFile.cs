@@ -41,8 +41,12 @@ public static class BoneMapFile
         return map;
     }
 
-    /// <summary>The humanoid map of <paramref name="skeleton"/>: found from the names, with the bones of <paramref name="path"/> (none when null) first.</summary>
+    /// <summary>
+    /// The humanoid map of <paramref name="clip"/>: found from the names, or from the hierarchy and the motion when the
+    /// names leave a required bone unfound (<see cref="HumanoidDetection"/>), with the bones of <paramref name="path"/>
+    /// (none when null) first. <paramref name="note"/> says when the names did not find it (null when they did).
+    /// </summary>
     /// <exception cref="ArgumentException">The file names a joint the skeleton does not have.</exception>
-    public static HumanoidMap Detect(Skeleton skeleton, string path) =>
-        HumanoidNaming.Detect(skeleton, path == null ? null : Read(path));
+    public static HumanoidMap Detect(BvhClip clip, string path, out string note) =>
+        HumanoidDetection.Detect(clip, path == null ? null : Read(path), out note);
 }

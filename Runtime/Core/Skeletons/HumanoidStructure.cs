@@ -134,17 +134,30 @@ namespace AvatarGo.Core
                 // Parents come before their children: reaches from the leaves up, the way up from the roots down.
                 for (int j = _n - 1; j >= 0; j--)
                     foreach (int c in _children[j]) _reach[j] = Math.Max(_reach[j], _length[c] + _reach[c]);
+                // The longest way on from a parent other than back down to j: its own way up, or its longest other child
+                // (the best two children kept per parent, so a joint with thousands of children costs no more than one).
+                var first = new int[_n];
+                var second = new int[_n];
+                for (int j = 0; j < _n; j++) first[j] = second[j] = -1;
                 for (int j = 0; j < _n; j++)
                 {
                     int p = skeleton.GetParent(j);
                     if (p < 0) continue;
-                    float best = _up[p];
-                    foreach (int sibling in _children[p])
-                        if (sibling != j) best = Math.Max(best, _length[sibling] + _reach[sibling]);
-                    _up[j] = _length[j] + best;
+                    if (first[p] < 0 || Branch(j) > Branch(first[p])) { second[p] = first[p]; first[p] = j; }
+                    else if (second[p] < 0 || Branch(j) > Branch(second[p])) second[p] = j;
+                }
+                for (int j = 0; j < _n; j++)
+                {
+                    int p = skeleton.GetParent(j);
+                    if (p < 0) continue;
+                    int sibling = first[p] == j ? second[p] : first[p];
+                    _up[j] = _length[j] + Math.Max(_up[p], sibling >= 0 ? Branch(sibling) : 0f);
                 }
                 for (int j = 0; j < _n; j++) _longest = Math.Max(_longest, _reach[j] + _up[j]);
             }
+
+            /// <summary>The longest path down from a joint's parent through the joint.</summary>
+            private float Branch(int joint) => _length[joint] + _reach[joint];
 
             public HumanoidMap Run(out string failure)
             {
@@ -375,7 +388,8 @@ namespace AvatarGo.Core
             private List<int> PathBetween(int from, int to)
             {
                 var path = new List<int>();
-                for (int j = _s.GetParent(to); j >= 0 && j != from; j = _s.GetParent(j)) path.Insert(0, j);
+                for (int j = _s.GetParent(to); j >= 0 && j != from; j = _s.GetParent(j)) path.Add(j);
+                path.Reverse();
                 return path;
             }
 

@@ -33,7 +33,7 @@ public sealed class BvhInfoCommand : ICommand
         string mapPath = a.String("map");
         a.ThrowOnUnknown(1);
         BvhClip clip = BvhReader.ReadFile(path);
-        HumanoidMap map = BoneMapFile.Detect(clip.Skeleton, mapPath);
+        HumanoidMap map = BoneMapFile.Detect(clip, mapPath, out string note);
         Skeleton s = clip.Skeleton;
         var inv = CultureInfo.InvariantCulture;
         float unit = clip.GuessMetresPerUnit();
@@ -54,6 +54,7 @@ public sealed class BvhInfoCommand : ICommand
         }
         var missing = map.MissingRequired();
         stdout.WriteLine($"humanoid: {map.Count} bones mapped; missing required: {(missing.Count == 0 ? "none" : string.Join(", ", missing))}");
+        if (note != null) stdout.WriteLine($"  {note}");
         if (missing.Count == 0)
         {
             var optional = OptionalBodyBones.Where(b => !map.Has(b)).ToList();

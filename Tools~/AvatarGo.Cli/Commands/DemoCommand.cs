@@ -37,13 +37,14 @@ public sealed class DemoCommand : ICommand
 
         BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
         SessionSimulator simulator;
+        string note = null;
         try
         {
-            simulator = new SessionSimulator(clip, options, BoneMapFile.Detect(clip.Skeleton, mapPath));
+            simulator = new SessionSimulator(clip, options, BoneMapFile.Detect(clip, mapPath, out note));
         }
         catch (ArgumentException e)
         {
-            stderr.WriteLine($"avatargo demo: {Path.GetFileName(bvh)} cannot be simulated: {e.Message.Split(" (Parameter '")[0]}");
+            stderr.WriteLine($"avatargo demo: {Path.GetFileName(bvh)} cannot be simulated: {e.Message.Split(" (Parameter '")[0]}{(note != null ? "; " + note : "")}");
             return 1;
         }
         string session = Path.Combine(Path.GetTempPath(), $"avatargo-demo-{Environment.ProcessId}.agsession");
@@ -70,6 +71,7 @@ public sealed class DemoCommand : ICommand
             }
             PrintTable(stdout, Path.GetFileName(bvh), clip, simulator.FrameCount, options, exact, fixedOffsets);
             SimulateCommand.PrintClipNotes(simulator, stdout);
+            if (note != null) stdout.WriteLine(note);
             if (outBvh != null)
             {
                 Skeleton wearer = simulator.Wearer.Skeleton; // the clip's, mirrored when the simulator mirrored it

@@ -52,18 +52,20 @@ public sealed class SimulateCommand : ICommand
         a.ThrowOnUnknown(0);
         BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
         SessionSimulator simulator;
+        string note = null;
         try
         {
-            simulator = new SessionSimulator(clip, options, BoneMapFile.Detect(clip.Skeleton, mapPath));
+            simulator = new SessionSimulator(clip, options, BoneMapFile.Detect(clip, mapPath, out note));
         }
         catch (ArgumentException e)
         {
-            stderr.WriteLine($"avatargo simulate: {Path.GetFileName(bvh)} cannot be simulated: {FirstLine(e)}");
+            stderr.WriteLine($"avatargo simulate: {Path.GetFileName(bvh)} cannot be simulated: {FirstLine(e)}{(note != null ? "; " + note : "")}");
             return 1;
         }
         if (!WriteSession(simulator, output, stderr, "simulate")) return 1;
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"wrote {output}: {simulator.FrameCount} frames at {options.Rate:0.##} Hz"));
         PrintClipNotes(simulator, stdout);
+        if (note != null) stdout.WriteLine(note);
         return 0;
     }
 

@@ -76,7 +76,8 @@ internal static class FuzzTargets
                 if (!Vectors.IsFinite(world[j].Position) || !Rotations.IsFinite(world[j].Rotation))
                     throw new FuzzFailure("non-finite world pose", $"frame {f}: joint {metres.Skeleton.GetName(j)} has a non-finite world pose {world[j]}");
         }
-        HumanoidNaming.Detect(metres.Skeleton);
+        // The names, and where they fall short the hierarchy and the motion (HumanoidStructure), as `simulate` reads them.
+        HumanoidDetection.Detect(metres, null, out _);
         // Written back, it reads again as the same clip.
         var text = new StringWriter();
         BvhWriter.Write(text, clip);

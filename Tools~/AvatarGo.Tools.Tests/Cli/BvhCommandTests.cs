@@ -135,9 +135,11 @@ public class BvhCommandTests
             File.WriteAllText(bad, "Bone.010 = LeftUpperArm\nBone.011 = LeftElbow\n");
             File.WriteAllText(absent, "Bone.099 = LeftUpperArm\n");
 
+            // Without the file the hierarchy and the motion find the arm (HumanoidStructure), and the command says so.
             var without = CliRunner.Run("simulate", "--bvh", clip, "--out", Path.Combine(dir, "a.session"));
-            Assert.That(without.ExitCode, Is.EqualTo(1));
-            StringAssert.Contains("lacks required humanoid bones: LeftUpperArm, LeftLowerArm, LeftHand", without.Stderr);
+            Assert.That(without.ExitCode, Is.EqualTo(0), without.Stderr);
+            StringAssert.Contains("the names give 16 humanoid bones: all were found from the hierarchy and the motion instead", without.Stdout);
+            StringAssert.Contains("Bone.011  [Zrotation Xrotation Yrotation]  -> LeftLowerArm", CliRunner.Run("bvh", "info", clip).Stdout);
 
             var with = CliRunner.Run("simulate", "--bvh", clip, "--out", Path.Combine(dir, "b.session"), "--map", map);
             Assert.That(with.ExitCode, Is.EqualTo(0), with.Stderr);
@@ -152,6 +154,35 @@ public class BvhCommandTests
             Assert.That(absentJoint.ExitCode, Is.EqualTo(1));
             StringAssert.Contains("Bone.099", absentJoint.Stderr);
             Assert.That(File.Exists(Path.Combine(dir, "c.session")) || File.Exists(Path.Combine(dir, "d.session")), Is.False, "no session written");
+        }
+        finally { Directory.Delete(dir, true); }
+    }
+
+    /// <summary>
+    /// A clip neither its names nor its structure read as a humanoid (a chain of numbered joints) is refused with both
+    /// reasons, and no session is written.
+    /// </summary>
+    [Test]
+    public void AClipThatIsNoHumanoidIsRefusedWithBothReasons()
+    {
+        var bvh = new System.Text.StringBuilder("HIERARCHY\nROOT j0\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n");
+        for (int j = 1; j < 6; j++) bvh.Append($"JOINT j{j}\n{{\n  OFFSET 0 20 0\n  CHANNELS 3 Zrotation Xrotation Yrotation\n");
+        bvh.Append("End Site\n{\n  OFFSET 0 20 0\n}\n");
+        for (int j = 0; j < 6; j++) bvh.Append("}\n");
+        bvh.Append("MOTION\nFrames: 30\nFrame Time: 0.0333333\n");
+        // Root position, then every joint's three rotations (the root's too), the chain curling a degree a frame.
+        for (int f = 0; f < 30; f++) bvh.Append("0 90 0 " + string.Join(" ", Enumerable.Repeat($"{f} 0 0", 6)) + "\n");
+        string dir = Path.Combine(Path.GetTempPath(), "avatargo-chain-" + Guid.NewGuid().ToString("N"));
+        Directory.CreateDirectory(dir);
+        try
+        {
+            string clip = Path.Combine(dir, "chain.bvh"), session = Path.Combine(dir, "chain.session");
+            File.WriteAllText(clip, bvh.ToString());
+            var run = CliRunner.Run("simulate", "--bvh", clip, "--out", session);
+            Assert.That(run.ExitCode, Is.EqualTo(1), run.Stdout);
+            StringAssert.Contains("lacks required humanoid bones", run.Stderr);
+            StringAssert.Contains("the hierarchy does not read as a humanoid either: 0 joint(s) where three long branches meet", run.Stderr);
+            Assert.That(File.Exists(session), Is.False, "no session written");
         }
         finally { Directory.Delete(dir, true); }
     }
