@@ -41,7 +41,10 @@ namespace AvatarGo.Core
             ThumbRest = thumbRest;
         }
 
-        /// <summary>Short identifier (file name without extension), e.g. <c>vive-wand</c>.</summary>
+        /// <summary>
+        /// Short identifier, the profile's <c>name</c> member, e.g. <c>vive-wand</c> (the shipped profiles' file names match
+        /// it; a profile loaded from another file keeps the name it declares).
+        /// </summary>
         public string Name { get; }
 
         /// <summary>Human-readable name.</summary>
@@ -110,6 +113,7 @@ namespace AvatarGo.Core
         /// <summary>Reads and parses a profile file; errors read <c>FILE:LINE: problem</c>.</summary>
         /// <exception cref="FormatException">The file is not a valid controller profile.</exception>
         /// <exception cref="IOException">The file cannot be read.</exception>
+        /// <exception cref="UnauthorizedAccessException">The file may not be read (its permissions).</exception>
         public static ControllerProfile Load(string path)
         {
             if (path == null) throw new ArgumentNullException(nameof(path));
