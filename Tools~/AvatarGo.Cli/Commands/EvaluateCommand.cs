@@ -231,6 +231,8 @@ public sealed class EvaluateCommand : ICommand
         Row(o, "knee angle (deg)", r.KneeAngleDegrees);
         foreach (var (bone, s) in r.JointPositionMm.OrderBy(p => p.Key))
             Row(o, "  " + bone, s);
+        if (r.AllJointsMm.InvalidCount > 0)
+            o.WriteLine($"non-finite: {r.AllJointsMm.InvalidCount} joint errors were NaN or infinite and are left out of the figures above");
         if (r.Disturbance != null)
         {
             DisturbanceReport d = r.Disturbance;
@@ -374,6 +376,7 @@ public sealed class EvaluateCommand : ICommand
             mpjpe_mm = r.AllJointsMm.Mean,
             knee_angle_error_deg = r.KneeAngleDegrees.Median,
             unreached_hand_frames = r.UnreachedHandFrames,
+            non_finite_joint_errors = r.AllJointsMm.InvalidCount,
             proportions = ProportionsJson(r),
             role_swaps = r.RoleSwaps,
             joints = r.JointPositionMm.OrderBy(p => p.Key).ToDictionary(p => p.Key.ToString(), p => new { median_mm = p.Value.Median, p95_mm = p.Value.P95, max_mm = p.Value.Max }),

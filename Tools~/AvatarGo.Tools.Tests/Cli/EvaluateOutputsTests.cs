@@ -36,6 +36,37 @@ public class EvaluateOutputsTests
         finally { File.Delete(output); }
     }
 
+    /// <summary>
+    /// Joint errors that were NaN or infinite are left out of the figures; `evaluate` says how many (text, when any; JSON,
+    /// always), so a figure never hides a frame it could not measure.
+    /// </summary>
+    [Test]
+    public void NonFiniteJointErrorsAreCountedInTheReport()
+    {
+        BvhClip clip = BvhReader.ReadFile(Paths.Mocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+        var simulator = new AvatarGo.Simulation.SessionSimulator(clip, new AvatarGo.Simulation.SimulationOptions { Seed = 1 });
+        var text = new StringWriter();
+        using (var writer = new SessionWriter(text, simulator.CreateHeader())) simulator.Run(writer);
+        AvatarGo.Simulation.EvaluationReport report;
+        using (var reader = new SessionReader(new StringReader(text.ToString()), "mixamo"))
+            report = AvatarGo.Simulation.SessionEvaluator.Evaluate(reader, new PipelineSettings());
+        Assert.That(report.Profile, Is.Not.Null, report.CalibrationMessage);
+
+        var clean = new StringWriter();
+        AvatarGo.Cli.Commands.EvaluateCommand.Print(report, clean);
+        StringAssert.DoesNotContain("non-finite", clean.ToString());
+        Assert.That(JsonDocument.Parse(AvatarGo.Cli.Commands.EvaluateCommand.ToJson(report)).RootElement.GetProperty("non_finite_joint_errors").GetInt32(), Is.EqualTo(0));
+
+        double mpjpe = report.AllJointsMm.Mean;
+        report.AllJointsMm.Add(double.NaN);
+        report.AllJointsMm.Add(double.PositiveInfinity);
+        var printed = new StringWriter();
+        AvatarGo.Cli.Commands.EvaluateCommand.Print(report, printed);
+        StringAssert.Contains("non-finite: 2 joint errors were NaN or infinite and are left out of the figures above", printed.ToString());
+        Assert.That(JsonDocument.Parse(AvatarGo.Cli.Commands.EvaluateCommand.ToJson(report)).RootElement.GetProperty("non_finite_joint_errors").GetInt32(), Is.EqualTo(2));
+        Assert.That(report.AllJointsMm.Mean, Is.EqualTo(mpjpe), "left out of the mean");
+    }
+
     [Test]
     public void RebaseRejectsAnUnknownConvention()
     {
