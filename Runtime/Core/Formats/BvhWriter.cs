@@ -29,18 +29,33 @@ namespace AvatarGo.Core
             if (clip == null) throw new ArgumentNullException(nameof(clip));
             writer.NewLine = "\n";
             writer.WriteLine("HIERARCHY");
-            WriteHierarchy(writer, clip);
+            List<int> written = WriteHierarchy(writer, clip);
             writer.WriteLine("MOTION");
             writer.WriteLine("Frames:\t" + clip.FrameCount.ToString(CultureInfo.InvariantCulture));
             writer.WriteLine("Frame Time:\t" + clip.FrameTime.ToString("R", CultureInfo.InvariantCulture));
+            // The clip keeps its values in joint-index order; a reader takes them in the order the hierarchy lists the
+            // joints (depth first), which differs when a joint was added after another branch (found in review: a clip
+            // built with joints appended read back with an ankle 1.48 m off). So each frame is written in that order.
+            Skeleton s = clip.Skeleton;
+            var start = new int[s.JointCount];
+            for (int j = 0, total = 0; j < s.JointCount; j++)
+            {
+                start[j] = total;
+                total += s.IsEndSite(j) ? 0 : clip.GetChannels(j).Count;
+            }
             var line = new StringBuilder(clip.ChannelCount * 10);
             for (int f = 0; f < clip.FrameCount; f++)
             {
                 line.Clear();
-                for (int c = 0; c < clip.ChannelCount; c++)
+                foreach (int j in written)
                 {
-                    if (c > 0) line.Append(' ');
-                    line.Append(clip.GetValue(f, c).ToString("R", CultureInfo.InvariantCulture));
+                    if (s.IsEndSite(j)) continue;
+                    int count = clip.GetChannels(j).Count;
+                    for (int c = 0; c < count; c++)
+                    {
+                        if (line.Length > 0) line.Append(' ');
+                        line.Append(clip.GetValue(f, start[j] + c).ToString("R", CultureInfo.InvariantCulture));
+                    }
                 }
                 writer.WriteLine(line.ToString());
             }
@@ -51,7 +66,8 @@ namespace AvatarGo.Core
         // growing at MaxIndent tabs, so that a chain thousands of joints deep is not quadratic in tabs.
         private const int MaxIndent = 32;
 
-        private static void WriteHierarchy(TextWriter w, BvhClip clip)
+        // Returns the joints in the order written.
+        private static List<int> WriteHierarchy(TextWriter w, BvhClip clip)
         {
             Skeleton s = clip.Skeleton;
             int n = s.JointCount;
@@ -66,10 +82,12 @@ namespace AvatarGo.Core
 
             // Each stack entry is a joint and how many of its children have been written; a joint is opened when pushed.
             var stack = new List<(int Joint, int NextChild)>();
+            var order = new List<int>(n);
             for (int root = 0; root < n; root++)
             {
                 if (s.GetParent(root) >= 0) continue;
                 Open(w, clip, root, 0);
+                order.Add(root);
                 stack.Add((root, 0));
                 while (stack.Count > 0)
                 {
@@ -79,6 +97,7 @@ namespace AvatarGo.Core
                         stack[stack.Count - 1] = (joint, next + 1);
                         int child = children[childStart[joint] + next];
                         Open(w, clip, child, stack.Count);
+                        order.Add(child);
                         stack.Add((child, 0));
                     }
                     else
@@ -88,6 +107,7 @@ namespace AvatarGo.Core
                     }
                 }
             }
+            return order;
         }
 
         private static void Open(TextWriter w, BvhClip clip, int joint, int depth)

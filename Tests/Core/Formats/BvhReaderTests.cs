@@ -191,6 +191,51 @@ namespace AvatarGo.Core.Tests
             }
         }
 
+        /// <summary>
+        /// A skeleton whose joints are valid (parents first) but not in depth-first order, a joint added to an early branch
+        /// after the others: the writer lists the hierarchy depth first and must write each frame's values in that order
+        /// too (found in review: they were written in index order, and such a clip read back with an ankle 1.48 m off).
+        /// </summary>
+        [Test]
+        public void AJointAddedAfterTheOthersIsWrittenWhereTheHierarchyListsIt()
+        {
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            Skeleton s = clip.Skeleton;
+            int n = s.JointCount, chest = s.IndexOf("Chest");
+            var names = new List<string>(s.Names) { "Backpack" };
+            var parents = new List<int>();
+            var rest = new List<RigidPose>();
+            for (int j = 0; j < n; j++) { parents.Add(s.GetParent(j)); rest.Add(s.GetRestLocal(j)); }
+            parents.Add(chest);
+            rest.Add(new RigidPose(new Vector3(0f, 0.1f, -0.15f), Quaternion.Identity));
+            var ends = new List<bool>();
+            for (int j = 0; j < n; j++) ends.Add(s.IsEndSite(j));
+            ends.Add(false);
+            var appended = new Skeleton(names, parents, rest, ends);
+            var frames = new List<RigidPose[]>();
+            for (int f = 0; f < 40; f++)
+            {
+                var local = new RigidPose[n + 1];
+                clip.GetLocalPoses(f, local.AsSpan(0, n));
+                local[n] = new RigidPose(rest[n].Position, Quaternion.CreateFromAxisAngle(Vector3.UnitY, 0.05f * f));
+                frames.Add(local);
+            }
+            BvhClip written = BvhClip.FromPoses(appended, frames, clip.FrameTime, 0.01f);
+            var sw = new StringWriter();
+            BvhWriter.Write(sw, written);
+            BvhClip back = BvhReader.Read(new StringReader(sw.ToString()), "appended", new BvhReadOptions { Scale = 0.01f });
+            Assert.That(back.Skeleton.IndexOf("Backpack"), Is.LessThan(back.Skeleton.IndexOf("LeftHip")), "read back depth first");
+            var world = new RigidPose[n + 1];
+            var l2 = new RigidPose[n + 1]; var w2 = new RigidPose[n + 1];
+            for (int f = 0; f < frames.Count; f++)
+            {
+                appended.ComputeWorld(frames[f], world);
+                back.GetWorldPoses(f, l2, w2);
+                for (int j = 0; j <= n; j++)
+                    Approx.Near(world[j].Position, w2[back.Skeleton.IndexOf(appended.GetName(j))].Position, 5e-5f, $"frame {f} {appended.GetName(j)}");
+            }
+        }
+
         [TestCase(0, 0, 0)]
         [TestCase(2, 0, 1)]
         [TestCase(0, 1, 2)]
