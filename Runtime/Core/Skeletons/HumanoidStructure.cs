@@ -18,14 +18,16 @@ namespace AvatarGo.Core
     /// The chest is the hub with a further, shorter branch, the head; if both or neither have one, the hub whose limbs have
     /// the longer bones carries the legs. The hips are the lowest common ancestor of the two hubs.</item>
     /// <item>Each <b>limb</b> follows, from its hub, the child with the longest reach at every joint. Joints the limb passes
-    /// straight through in every frame (twist joints) or that sit on their parent are not articulations; of the segments
-    /// between articulations, the two consecutive ones with the greatest total length whose lengths are within a factor of
-    /// 1.67 of each other are the upper and lower limb (thigh and shin, upper arm and forearm); the articulation they end
-    /// at is the foot or hand, the joint after a foot is the toes, the first joint of an arm before its upper arm is the
-    /// clavicle.</item>
-    /// <item>The <b>head</b> branch is the chest's longest other branch, at least 4 % of the longest path (8 cm) long; the
-    /// head is its last joint, not counting End Sites and a joint that only marks the end (Mixamo's <c>HeadTop_End</c>,
-    /// whose End Sites lie on it); the branch's first joint, when it is not the head, is the neck. The joints between the hips and
+    /// straight through in every frame (twist joints) or that sit on their parent are not articulations (of joints in one
+    /// place, the first is). Of the segments between articulations, the two consecutive ones with the greatest total
+    /// length, within a factor of 1.67 of each other and longer than every segment before them, are the upper and lower
+    /// limb (thigh and shin, upper arm and forearm); the articulation they end at is the foot or hand, which must have a
+    /// joint or an End Site beyond it; the joint after a foot is the toes, the first joint of an arm before its upper arm
+    /// the clavicle.</item>
+    /// <item>The <b>head</b> branch is the chest's longest other branch, at least 4 % of the longest path (8 cm) long; it
+    /// is followed while it goes on through a single child turning less than 60°, and the head is its last joint there
+    /// (not counting End Sites and a joint that only marks the end, Mixamo's <c>HeadTop_End</c>), so eyes, a jaw or a
+    /// ponytail end it; the branch's first joint, when it is not the head, is the neck. The joints between the hips and
     /// the neck are the spine: Spine, Chest, UpperChest, as <see cref="HumanoidNaming"/> counts them.</item>
     /// <item><b>Sides</b>: each arm goes with the leg whose hip is nearer its shoulder; left is the side whose knees then bend
     /// forward (as <c>ClipConventions.CountKneeBends</c> reads a knee); with no bent knee in the frames, the side the body's
@@ -43,6 +45,9 @@ namespace AvatarGo.Core
 
         /// <summary>A joint whose bones in and out stay within this angle (degrees) in every frame is not an articulation.</summary>
         public const float StraightDegrees = 3f;
+
+        /// <summary>The head branch goes on through a joint whose bone turns less than this (degrees) from the bone before.</summary>
+        public const float HeadTurnDegrees = 60f;
 
         /// <summary>The upper and lower limb are within this factor of each other's length.</summary>
         public const float LimbPairRatio = 1.67f;
@@ -186,9 +191,8 @@ namespace AvatarGo.Core
                     limbs[h] = new Limb[2];
                     for (int k = 0; k < 2; k++)
                     {
-                        limbs[h][k] = ReadLimb(hub, sides[k]);
-                        if (limbs[h][k] == null)
-                            return Fail($"the limb from '{_s.GetName(sides[k])}' has no two long segments of similar length (an upper and a lower limb, which bend at a joint in some frame)", out failure);
+                        limbs[h][k] = ReadLimb(hub, sides[k], out string why);
+                        if (limbs[h][k] == null) return Fail(why, out failure);
                     }
                 }
 
@@ -228,7 +232,7 @@ namespace AvatarGo.Core
                     if (joint >= 0) bones.Add(new KeyValuePair<HumanoidBone, string>(bone, _s.GetName(joint)));
                 }
                 Add(HumanoidBone.Hips, hips);
-                ReadHead(headBranch, out int neck, out int head);
+                ReadHead(chest, headBranch, out int neck, out int head);
                 if (head < 0) return Fail($"the head branch from '{_s.GetName(chest)}' has no joint", out failure);
                 List<int> spine = PathBetween(hips, neck >= 0 ? neck : head);
                 if (spine.Count == 0) return Fail("no joint lies between the hips and the head", out failure);
@@ -297,20 +301,28 @@ namespace AvatarGo.Core
             }
 
             /// <summary>A limb from <paramref name="hub"/> through <paramref name="first"/>: its articulations and the pair of
-            /// long segments; null without such a pair.</summary>
-            private Limb ReadLimb(int hub, int first)
+            /// long segments; null, with the reason, without such a pair.</summary>
+            private Limb ReadLimb(int hub, int first, out string failure)
             {
+                failure = null;
                 List<int> chain = Chain(first);
                 var path = new List<int> { hub };
                 path.AddRange(chain);
-                // Articulations: the hub, every joint the limb bends at in some frame, and the chain's end.
+                // Articulations: the hub, every joint the limb bends at in some frame, and the chain's end. Of joints in one
+                // place (a joint with a zero offset under it: a sword's grip, an inserted joint) the first is the joint;
+                // whether it bends is read toward the first joint beyond them.
                 var joints = new List<int> { hub };
                 float straight = MathF.Cos(StraightDegrees * MathF.PI / 180f);
+                int last = path[path.Count - 1];
                 for (int k = 1; k < path.Count - 1; k++)
                 {
-                    if (Bends(joints[joints.Count - 1], path[k], path[k + 1], straight)) joints.Add(path[k]);
+                    int at = path[k], beyond = k + 1;
+                    while (beyond < path.Count && Coincide(at, path[beyond])) beyond++;
+                    if (beyond == path.Count) { last = at; break; }
+                    if (Bends(joints[joints.Count - 1], at, path[beyond], straight)) joints.Add(at);
+                    k = beyond - 1;
                 }
-                joints.Add(path[path.Count - 1]);
+                joints.Add(last);
 
                 int best = -1;
                 float bestLength = 0f;
@@ -318,16 +330,33 @@ namespace AvatarGo.Core
                 {
                     float a = MeanDistance(joints[k], joints[k + 1]), b = MeanDistance(joints[k + 1], joints[k + 2]);
                     if (!(a > 0f && b > 0f) || Math.Max(a, b) > LimbPairRatio * Math.Min(a, b)) continue;
+                    // The upper and lower limb are the limb's longest segments up to its hand or foot: a foot and its toes
+                    // after a leg that never bent (hip to ankle one segment) are not a thigh and a shin.
+                    bool longest = true;
+                    for (int m = 0; m < k && longest; m++) longest = MeanDistance(joints[m], joints[m + 1]) <= Math.Max(a, b);
+                    if (!longest) continue;
                     if (a + b > bestLength) { bestLength = a + b; best = k; }
                 }
-                if (best < 0) return null;
+                if (best < 0)
+                {
+                    failure = $"the limb from '{_s.GetName(first)}' has no two long segments of similar length (an upper and a lower limb, which bend at a joint in some frame)";
+                    return null;
+                }
                 int end = joints[best + 2];
-                int endAt = chain.IndexOf(end);
-                int next = endAt + 1 < chain.Count && !_s.IsEndSite(chain[endAt + 1]) ? chain[endAt + 1] : -1;
+                if (!_s.IsEndSite(end) && _children[end].Count == 0)
+                {
+                    // Nothing beyond the hand or foot: a limb of clavicle, upper arm and forearm reads the same way as one of
+                    // upper arm, forearm and hand.
+                    failure = $"the limb from '{_s.GetName(first)}' ends at '{_s.GetName(end)}' with nothing beyond it (no End Site): its hand or foot cannot be told from the joint before";
+                    return null;
+                }
+                int endAt = chain.IndexOf(end), afterAt = endAt + 1;
+                while (afterAt < chain.Count && Coincide(end, chain[afterAt])) afterAt++;
+                int next = afterAt < chain.Count && !_s.IsEndSite(chain[afterAt]) ? chain[afterAt] : -1;
                 int upper = joints[best];
                 return new Limb
                 {
-                    Before = chain[0] != upper ? chain[0] : -1,
+                    Before = chain[0] != upper && !Coincide(chain[0], upper) ? chain[0] : -1,
                     Upper = upper,
                     Lower = joints[best + 1],
                     End = end,
@@ -335,6 +364,14 @@ namespace AvatarGo.Core
                     UpperLength = MeanDistance(joints[best], joints[best + 1]),
                     LowerLength = MeanDistance(joints[best + 1], joints[best + 2]),
                 };
+            }
+
+            /// <summary>Whether two joints sit in one place in every frame (within 0.01 % of the longest path, 0.2 mm).</summary>
+            private bool Coincide(int a, int b)
+            {
+                foreach (Vector3[] frame in _frames)
+                    if (!(Vector3.Distance(frame[a], frame[b]) <= 1e-4f * _longest)) return false;
+                return true;
             }
 
             /// <summary>Whether the limb bends at <paramref name="at"/> in some frame (or it sits on the joint before).</summary>
@@ -364,15 +401,43 @@ namespace AvatarGo.Core
                 return best;
             }
 
-            private void ReadHead(int first, out int neck, out int head)
+            private void ReadHead(int chest, int first, out int neck, out int head)
             {
-                List<int> chain = Chain(first);
+                // Up the branch while it goes on upward through a single joint: the head is where it splits (eyes, jaw, the
+                // head's top, a ponytail) or turns away (hair hanging from a head with no other child), not the longest
+                // path's end, which a ponytail would be.
+                var chain = new List<int> { first };
+                float onward = MathF.Cos(HeadTurnDegrees * MathF.PI / 180f);
+                for (int from = chest, at = first; ;)
+                {
+                    int only = -1, count = 0;
+                    foreach (int c in _children[at])
+                        if (!_s.IsEndSite(c) || _length[c] > 0.005f * _longest) { only = c; count++; }
+                    if (count != 1 || !GoesOn(from, at, only, onward)) break;
+                    chain.Add(only);
+                    from = at;
+                    at = only;
+                }
                 int last = chain.Count - 1;
                 while (last >= 0 && _s.IsEndSite(chain[last])) last--;
                 // A joint that only marks where the head ends (Mixamo's HeadTop_End, its End Site on it) is not the head.
                 if (last > 0 && IsEndMarker(chain[last])) last--;
                 head = last >= 0 ? chain[last] : -1;
                 neck = head >= 0 && chain[0] != head ? chain[0] : -1;
+            }
+
+            /// <summary>Whether the bone from <paramref name="at"/> to <paramref name="next"/> goes on within the angle whose
+            /// cosine is <paramref name="onward"/> of the bone into <paramref name="at"/>, on average over the frames.</summary>
+            private bool GoesOn(int from, int at, int next, float onward)
+            {
+                double sum = 0;
+                foreach (Vector3[] frame in _frames)
+                {
+                    Vector3 a = frame[at] - frame[from], b = frame[next] - frame[at];
+                    float la = a.Length(), lb = b.Length();
+                    sum += la > 0f && lb > 0f ? Vector3.Dot(a, b) / (la * lb) : 1.0; // a bone of no length turns nothing
+                }
+                return sum / _frames.Count >= onward;
             }
 
             /// <summary>A joint with children, all of them End Sites within a centimetre: a marker of where a chain ends.</summary>

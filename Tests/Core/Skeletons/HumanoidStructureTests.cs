@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
@@ -31,6 +32,14 @@ namespace AvatarGo.Core.Tests
 
         private static BvhClip Clip(string file) => BvhReader.ReadFile(TestData.Mocap(file), new BvhReadOptions { ToMetres = true });
 
+        /// <summary><paramref name="clip"/> written as BVH and read again (metres): its joints in depth-first order.</summary>
+        private static BvhClip ReadBack(BvhClip clip)
+        {
+            var text = new StringWriter();
+            BvhWriter.Write(text, clip);
+            return BvhReader.Read(new StringReader(text.ToString()), "read back", new BvhReadOptions { ToMetres = true });
+        }
+
         /// <summary><paramref name="clip"/> with every joint named by its index (<c>j0</c>, …): no name says anything.</summary>
         internal static BvhClip Numbered(BvhClip clip)
         {
@@ -44,6 +53,7 @@ namespace AvatarGo.Core.Tests
         /// <summary>Asserts that the structure of the numbered clip maps, bone by bone, the joints the names map in <paramref name="named"/>.</summary>
         private static void AssertSameBones(BvhClip named, string what)
         {
+            named = ReadBack(named); // in the order a file lists the joints, which Numbered keeps
             HumanoidMap byNames = HumanoidNaming.Detect(named.Skeleton);
             Assert.That(byNames.IsComplete, Is.True, $"{what}: the names");
             BvhClip numbered = Numbered(named);
@@ -115,6 +125,95 @@ namespace AvatarGo.Core.Tests
             using (var writer = new SessionWriter(text, simulator.CreateHeader())) simulator.Run(writer);
             using var reader = new SessionReader(new StringReader(text.ToString()), "structure");
             return SessionEvaluator.Evaluate(reader, new PipelineSettings());
+        }
+
+        /// <summary>
+        /// <paramref name="clip"/> with joints added (each under a named parent, at an offset in its parent's frame); each
+        /// added joint that is not an End Site swings about its X axis, 0.02 rad a frame.
+        /// </summary>
+        private static BvhClip WithAdded(BvhClip clip, params (string name, string parent, Vector3 offset, bool endSite)[] added)
+        {
+            Skeleton s = clip.Skeleton;
+            int n = s.JointCount;
+            var names = new List<string>(s.Names);
+            var parents = Enumerable.Range(0, n).Select(s.GetParent).ToList();
+            var rest = Enumerable.Range(0, n).Select(s.GetRestLocal).ToList();
+            var ends = Enumerable.Range(0, n).Select(s.IsEndSite).ToList();
+            foreach (var a in added)
+            {
+                parents.Add(names.IndexOf(a.parent));
+                names.Add(a.name);
+                rest.Add(new RigidPose(a.offset, Quaternion.Identity));
+                ends.Add(a.endSite);
+            }
+            var skeleton = new Skeleton(names, parents, rest, ends);
+            var frames = new List<RigidPose[]>();
+            for (int f = 0; f < clip.FrameCount; f++)
+            {
+                var local = new RigidPose[names.Count];
+                clip.GetLocalPoses(f, local.AsSpan(0, n));
+                for (int k = 0; k < added.Length; k++)
+                    local[n + k] = new RigidPose(added[k].offset, added[k].endSite ? Quaternion.Identity : Quaternion.CreateFromAxisAngle(Vector3.UnitX, 0.02f * f));
+                frames.Add(local);
+            }
+            return BvhClip.FromPoses(skeleton, frames, clip.FrameTime);
+        }
+
+        /// <summary>A ponytail hanging from the head (a VRoid or MMD model's hair chain) is not the head (found in review: its last joint was).</summary>
+        [TestCaseSource(nameof(Clips))]
+        public void AHairChainOnTheHeadIsNotTheHead(string file)
+        {
+            BvhClip clip = Clip(file);
+            string head = HumanoidNaming.Detect(clip.Skeleton).NameOf(HumanoidBone.Head);
+            var hair = new List<(string, string, Vector3, bool)>();
+            for (int k = 0; k < 5; k++) hair.Add(($"pt{k}", k == 0 ? head : $"pt{k - 1}", new Vector3(0f, -0.06f, -0.02f), false));
+            hair.Add(("pt_end", "pt4", new Vector3(0f, -0.06f, -0.02f), true));
+            AssertSameBones(WithAdded(clip, hair.ToArray()), $"{file} with a ponytail");
+        }
+
+        /// <summary>
+        /// Joints in one place: a sword gripped at the wrist (its own joint on the wrist, a metre long) and a joint inserted on
+        /// the upper arm's: the first of them is the limb's joint (found in review: the sword became the hand, the inserted
+        /// joint the upper arm).
+        /// </summary>
+        [Test]
+        public void OfJointsInOnePlaceTheFirstIsTheLimbsJoint()
+        {
+            BvhClip clip = Clip("mocapbank_30fps.bvh");
+            AssertSameBones(WithAdded(clip, ("sword", "RightWrist", Vector3.Zero, false), ("sword_tip", "sword", new Vector3(0f, 0f, 1f), true)), "a sword at the wrist");
+            AssertSameBones(Topology.WithJointsAbove(clip, ("LeftElbow", "ez", 0f), ("RightElbow", "ez2", 0f)), "a joint on the upper arm's");
+        }
+
+        /// <summary>
+        /// A clip whose knees never bend cannot show them; nor can an arm with nothing beyond its last joint tell the hand
+        /// from the elbow. Both are refused, not read wrong (found in review: Mixamo's straight-legged clip read foot and toe
+        /// as thigh and shin, and Rigify's arms without their End Sites were shifted by a joint, both with sides swapped).
+        /// </summary>
+        [Test]
+        public void LimbsTheMotionCannotShowAreRefusedNotMisread()
+        {
+            BvhClip mixamo = Clip("mixamo_fingers_30fps.bvh");
+            HumanoidMap names = HumanoidNaming.Detect(mixamo.Skeleton);
+            Skeleton s = mixamo.Skeleton;
+            var frames = new List<RigidPose[]>();
+            for (int f = 0; f < mixamo.FrameCount; f++)
+            {
+                var local = new RigidPose[s.JointCount];
+                mixamo.GetLocalPoses(f, local);
+                foreach (HumanoidBone knee in new[] { HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg })
+                    local[names[knee]] = new RigidPose(local[names[knee]].Position, Quaternion.Identity);
+                frames.Add(local);
+            }
+            BvhClip straight = Numbered(BvhClip.FromPoses(s, frames, mixamo.FrameTime));
+            Assert.That(HumanoidStructure.Detect(straight, out string why), Is.Null, "knees held straight");
+            StringAssert.Contains("no two long segments", why);
+
+            BvhClip rigify = Clip("rigify_6channel_24fps_first240.bvh");
+            int[] ends = Enumerable.Range(0, rigify.Skeleton.JointCount).Where(j => rigify.Skeleton.GetName(j).StartsWith("forearm") && rigify.Skeleton.IsEndSite(j)).ToArray();
+            Assert.That(ends.Length, Is.EqualTo(2));
+            BvhClip handless = Numbered(Topology.Without(rigify, ends));
+            Assert.That(HumanoidStructure.Detect(handless, out why), Is.Null, "forearms with nothing beyond");
+            StringAssert.Contains("nothing beyond it", why);
         }
 
         [Test]
