@@ -8,7 +8,8 @@ namespace AvatarGo.Core
     /// Finds the humanoid bones of a skeleton from its hierarchy and how its joints move, not from their names: the
     /// fallback for rigs whose names <see cref="HumanoidNaming"/> cannot read (numbered joints, names in another language).
     /// It reads nothing that the rest pose or the bones' local axes decide: bone lengths and angles are measured on the
-    /// joints' world positions in the frames given.
+    /// joints' world positions in the frames given (lengths as medians over the frames, and a joint bends when it does in
+    /// one frame in fifty, so a glitch in one frame changes nothing).
     /// </summary>
     /// <remarks>
     /// The rules, in order (a person's proportions, not any rig's):
@@ -117,6 +118,7 @@ namespace AvatarGo.Core
             private readonly float[] _reach;   // longest path down from the joint
             private readonly float[] _up;      // longest path that leaves the joint through its parent
             private readonly List<int>[] _children;
+            private readonly float[] _scratch;
             private float _longest;
 
             public Reading(Skeleton skeleton, IReadOnlyList<Vector3[]> frames)
@@ -128,13 +130,14 @@ namespace AvatarGo.Core
                 _reach = new float[_n];
                 _up = new float[_n];
                 _children = new List<int>[_n];
+                _scratch = new float[frames.Count];
                 for (int j = 0; j < _n; j++) _children[j] = new List<int>();
                 for (int j = 0; j < _n; j++)
                 {
                     int p = skeleton.GetParent(j);
                     if (p < 0) continue;
                     _children[p].Add(j);
-                    _length[j] = MeanDistance(j, p);
+                    _length[j] = Distance(j, p);
                 }
                 // Parents come before their children: reaches from the leaves up, the way up from the roots down.
                 for (int j = _n - 1; j >= 0; j--)
@@ -214,8 +217,8 @@ namespace AvatarGo.Core
                 if (hips < 0) return Fail("the pelvis and the chest are in separate hierarchies", out failure);
 
                 // Each arm with the leg whose hip is nearer its shoulder, then left by the knees (or the toes).
-                if (MeanDistance(arms[0].Upper, legs[0].Upper) + MeanDistance(arms[1].Upper, legs[1].Upper) >
-                    MeanDistance(arms[0].Upper, legs[1].Upper) + MeanDistance(arms[1].Upper, legs[0].Upper))
+                if (Distance(arms[0].Upper, legs[0].Upper) + Distance(arms[1].Upper, legs[1].Upper) >
+                    Distance(arms[0].Upper, legs[1].Upper) + Distance(arms[1].Upper, legs[0].Upper))
                     (arms[0], arms[1]) = (arms[1], arms[0]);
                 int leftFirst = FirstIsLeft(legs, hips, chest, Toe(legs[0]), Toe(legs[1]));
                 if (leftFirst == 0)
@@ -278,11 +281,13 @@ namespace AvatarGo.Core
                 return branches;
             }
 
-            private float MeanDistance(int a, int b)
+            /// <summary>The distance between two joints: the median over the frames, so that a glitch in one frame does not move it.</summary>
+            private float Distance(int a, int b)
             {
-                double sum = 0;
-                foreach (Vector3[] frame in _frames) sum += Vector3.Distance(frame[a], frame[b]);
-                return (float)(sum / _frames.Count);
+                for (int f = 0; f < _frames.Count; f++) _scratch[f] = Vector3.Distance(_frames[f][a], _frames[f][b]);
+                Array.Sort(_scratch, 0, _frames.Count);
+                int mid = _frames.Count / 2;
+                return _frames.Count % 2 == 1 ? _scratch[mid] : 0.5f * (_scratch[mid - 1] + _scratch[mid]);
             }
 
             /// <summary>From <paramref name="first"/> on, the child with the longest reach at every joint, to a leaf.</summary>
@@ -324,17 +329,18 @@ namespace AvatarGo.Core
                 }
                 joints.Add(last);
 
+                var segment = new float[joints.Count - 1];
+                for (int k = 0; k < segment.Length; k++) segment[k] = Distance(joints[k], joints[k + 1]);
                 int best = -1;
-                float bestLength = 0f;
-                for (int k = 1; k + 2 < joints.Count; k++)
+                float bestLength = 0f, before = 0f; // the longest segment before the pair
+                for (int k = 1; k + 1 < segment.Length; k++)
                 {
-                    float a = MeanDistance(joints[k], joints[k + 1]), b = MeanDistance(joints[k + 1], joints[k + 2]);
+                    before = Math.Max(before, segment[k - 1]);
+                    float a = segment[k], b = segment[k + 1];
                     if (!(a > 0f && b > 0f) || Math.Max(a, b) > LimbPairRatio * Math.Min(a, b)) continue;
                     // The upper and lower limb are the limb's longest segments up to its hand or foot: a foot and its toes
                     // after a leg that never bent (hip to ankle one segment) are not a thigh and a shin.
-                    bool longest = true;
-                    for (int m = 0; m < k && longest; m++) longest = MeanDistance(joints[m], joints[m + 1]) <= Math.Max(a, b);
-                    if (!longest) continue;
+                    if (before > Math.Max(a, b)) continue;
                     if (a + b > bestLength) { bestLength = a + b; best = k; }
                 }
                 if (best < 0)
@@ -361,28 +367,26 @@ namespace AvatarGo.Core
                     Lower = joints[best + 1],
                     End = end,
                     After = next,
-                    UpperLength = MeanDistance(joints[best], joints[best + 1]),
-                    LowerLength = MeanDistance(joints[best + 1], joints[best + 2]),
+                    UpperLength = segment[best],
+                    LowerLength = segment[best + 1],
                 };
             }
 
-            /// <summary>Whether two joints sit in one place in every frame (within 0.01 % of the longest path, 0.2 mm).</summary>
-            private bool Coincide(int a, int b)
-            {
-                foreach (Vector3[] frame in _frames)
-                    if (!(Vector3.Distance(frame[a], frame[b]) <= 1e-4f * _longest)) return false;
-                return true;
-            }
+            /// <summary>Whether two joints sit in one place (within 0.01 % of the longest path, 0.2 mm; the median over the frames).</summary>
+            private bool Coincide(int a, int b) => Distance(a, b) <= 1e-4f * _longest;
 
             /// <summary>Whether the limb bends at <paramref name="at"/> in some frame (or it sits on the joint before).</summary>
             private bool Bends(int before, int at, int after, float straight)
             {
+                // On its neighbour: not a joint of its own.
+                if (!(Distance(before, at) > 1e-4f * _longest) || !(Distance(at, after) > 1e-4f * _longest)) return false;
+                // Bent in one frame in fifty (at least one): a glitch in a single frame does not make a twist joint a joint.
+                int needed = Math.Max(1, _frames.Count / 50), bent = 0;
                 foreach (Vector3[] frame in _frames)
                 {
                     Vector3 a = frame[at] - frame[before], b = frame[after] - frame[at];
                     float la = a.Length(), lb = b.Length();
-                    if (!(la > 1e-4f * _longest) || !(lb > 1e-4f * _longest)) return false; // on its neighbour: not a joint of its own
-                    if (Vector3.Dot(a, b) < straight * la * lb) return true;
+                    if (la > 0f && lb > 0f && Vector3.Dot(a, b) < straight * la * lb && ++bent >= needed) return true;
                 }
                 return false;
             }

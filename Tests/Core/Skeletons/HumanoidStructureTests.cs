@@ -216,6 +216,27 @@ namespace AvatarGo.Core.Tests
             StringAssert.Contains("nothing beyond it", why);
         }
 
+        /// <summary>
+        /// One glitched frame (Rigify's knee, which has position channels, 50 m off) changes nothing: lengths are medians and
+        /// a joint must bend in more than one frame in fifty (found in review: the mean lengths refused the clip).
+        /// </summary>
+        [Test]
+        public void OneGlitchedFrameChangesNothing()
+        {
+            BvhClip clip = Clip("rigify_6channel_24fps_first240.bvh");
+            Skeleton s = clip.Skeleton;
+            int knee = s.IndexOf("shin.L");
+            var frames = new List<RigidPose[]>();
+            for (int f = 0; f < clip.FrameCount; f++)
+            {
+                var local = new RigidPose[s.JointCount];
+                clip.GetLocalPoses(f, local);
+                if (f == 100) local[knee] = local[knee].WithPosition(local[knee].Position + new Vector3(50f, 0f, 0f)); // a sampled frame
+                frames.Add(local);
+            }
+            AssertSameBones(BvhClip.FromPoses(s, frames, clip.FrameTime), "a knee 50 m off in one frame");
+        }
+
         [Test]
         public void AChainIsNotAHumanoid()
         {
