@@ -103,14 +103,18 @@ public sealed class CalibrateCommand : ICommand
     }
 
     /// <summary>
-    /// The humanoid avatar of a BVH file (its rest pose, in metres), or a one-line <see cref="FormatException"/>
-    /// naming the file when it cannot be one (a skeleton without the required humanoid bones).
+    /// The humanoid avatar of a BVH file (its rest pose, in metres; its bones from the names, else from its hierarchy and
+    /// motion, <see cref="HumanoidDetection"/>), or a one-line <see cref="FormatException"/> naming the file when it cannot
+    /// be one (a skeleton without the required humanoid bones).
     /// </summary>
     internal static HumanoidMap AvatarFrom(string file)
     {
-        HumanoidMap map = HumanoidNaming.Detect(BvhReader.ReadFile(file, new BvhReadOptions { ToMetres = true }).Skeleton);
+        // The names, else the hierarchy and the file's motion (an avatar file with only its rest pose cannot show its
+        // knees and elbows: then the names must find them).
+        HumanoidMap map = HumanoidDetection.Detect(BvhReader.ReadFile(file, new BvhReadOptions { ToMetres = true }), null, out string note);
         var missing = map.MissingRequired();
-        if (missing.Count > 0) throw new FormatException($"{Path.GetFileName(file)}: not a humanoid avatar: its skeleton lacks {string.Join(", ", missing)}");
+        if (missing.Count > 0)
+            throw new FormatException($"{Path.GetFileName(file)}: not a humanoid avatar: its skeleton lacks {string.Join(", ", missing)}{(note != null ? "; " + note : "")}");
         return map;
     }
 }

@@ -125,6 +125,28 @@ public class FileSafetyCommandTests
         Assert.That(File.Exists(Path.Combine(_dir, "x.agsession")), Is.False);
     }
 
+    /// <summary>
+    /// An avatar file whose joint names say nothing (numbered) is read from its hierarchy and motion: `evaluate --avatar`
+    /// with the session's own skeleton so numbered gives the figures of the session's own skeleton.
+    /// </summary>
+    [Test]
+    public void AnAvatarFileWithNumberedJointsIsReadFromItsStructure()
+    {
+        string text = File.ReadAllText(Paths.Mocap("mocapbank_30fps.bvh"));
+        int next = 0;
+        string numbered = System.Text.RegularExpressions.Regex.Replace(text, @"^(\s*(?:ROOT|JOINT)\s+)(\S+)", m => m.Groups[1].Value + "j" + next++, System.Text.RegularExpressions.RegexOptions.Multiline);
+        string avatar = Path.Combine(_dir, "numbered.bvh"), session = Path.Combine(_dir, "s.agsession");
+        File.WriteAllText(avatar, numbered);
+        Assert.That(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--out", session).ExitCode, Is.EqualTo(0));
+        string own = Path.Combine(_dir, "own.json"), other = Path.Combine(_dir, "other.json");
+        var a = CliRunner.Run("evaluate", session, "--json", own);
+        var b = CliRunner.Run("evaluate", session, "--avatar", avatar, "--json", other);
+        Assert.That(a.ExitCode, Is.EqualTo(0), a.ToString());
+        Assert.That(b.ExitCode, Is.EqualTo(0), b.ToString());
+        double Mpjpe(string json) => System.Text.Json.JsonDocument.Parse(File.ReadAllText(json)).RootElement.GetProperty("mpjpe_mm").GetDouble();
+        Assert.That(Mpjpe(other), Is.EqualTo(Mpjpe(own)).Within(0.01), "MPJPE (mm)");
+    }
+
     // ---- Child processes -------------------------------------------------------------------------------
 
     private static Process StartCli(params string[] args)
