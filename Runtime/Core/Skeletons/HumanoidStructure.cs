@@ -19,12 +19,12 @@ namespace AvatarGo.Core
     /// The chest is the hub with a further, shorter branch, the head; if both or neither have one, the hub whose limbs have
     /// the longer bones carries the legs. The hips are the lowest common ancestor of the two hubs.</item>
     /// <item>Each <b>limb</b> follows, from its hub, the child with the longest reach at every joint. Joints the limb passes
-    /// straight through in every frame (twist joints) or that sit on their parent are not articulations (of joints in one
-    /// place, the first is). Of the segments between articulations, the two consecutive ones with the greatest total
-    /// length, within a factor of 1.67 of each other and longer than every segment before them, are the upper and lower
-    /// limb (thigh and shin, upper arm and forearm); the articulation they end at is the foot or hand, which must have a
-    /// joint or an End Site beyond it; the joint after a foot is the toes, the first joint of an arm before its upper arm
-    /// the clavicle.</item>
+    /// straight through (within 3° in all but fewer than one frame in fifty: twist joints) or that sit on their parent
+    /// are not articulations (of joints in one place, the first is). Of the segments between articulations, the two
+    /// consecutive ones with the greatest total length, within a factor of 1.67 of each other and longer than every
+    /// segment before them, are the upper and lower limb (thigh and shin, upper arm and forearm); the articulation they
+    /// end at is the foot or hand, which must have a joint or an End Site beyond it; the joint after a foot is the toes,
+    /// the first joint of an arm before its upper arm the clavicle.</item>
     /// <item>The <b>head</b> branch is the chest's longest other branch, at least 4 % of the longest path (8 cm) long; it
     /// is followed while it goes on through a single child turning less than 60°, and the head is its last joint there
     /// (not counting End Sites and a joint that only marks the end, Mixamo's <c>HeadTop_End</c>), so eyes, a jaw or a
@@ -44,7 +44,10 @@ namespace AvatarGo.Core
         /// <summary>The head branch is at least this share of the longest path long (~8 cm).</summary>
         public const float HeadHeightShare = 0.04f;
 
-        /// <summary>A joint whose bones in and out stay within this angle (degrees) in every frame is not an articulation.</summary>
+        /// <summary>
+        /// A joint whose bones in and out stay within this angle (degrees) in all but fewer than one frame in fifty is not an
+        /// articulation.
+        /// </summary>
         public const float StraightDegrees = 3f;
 
         /// <summary>The head branch goes on through a joint whose bone turns less than this (degrees) from the bone before.</summary>
