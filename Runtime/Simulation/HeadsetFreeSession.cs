@@ -26,7 +26,9 @@ namespace AvatarGo.Simulation
             if (bvhText == null) throw new ArgumentNullException(nameof(bvhText));
             if (path == null) throw new ArgumentNullException(nameof(path));
             BvhClip clip = BvhReader.Read(new StringReader(bvhText), sourceName ?? "clip", new BvhReadOptions { ToMetres = true });
-            HumanoidMap wearer = HumanoidDetection.Detect(clip, null, out _);
+            HumanoidMap wearer = HumanoidDetection.Detect(clip, null, out string note);
+            if (!wearer.IsComplete && note != null)
+                throw new ArgumentException($"The rig lacks required humanoid bones: {string.Join(", ", wearer.MissingRequired())}; {note}.", nameof(bvhText));
             wearer.RequireComplete(nameof(bvhText));
             var simulator = new SessionSimulator(clip, options ?? new SimulationOptions(), wearer);
             string folder = Path.GetDirectoryName(Path.GetFullPath(path));

@@ -34,7 +34,10 @@ namespace AvatarGo.Simulation
             _options = options ?? new SimulationOptions();
             double frames = (_options.TPoseSeconds + _options.WalkInSeconds + _options.ExerciseSeconds + _options.BlendSeconds + clip.FrameCount * (double)clip.FrameTime) * _options.Rate;
             if (!(frames < int.MaxValue)) throw new ArgumentException($"The clip is too long to simulate at {_options.Rate} Hz ({(long)Math.Min(frames, long.MaxValue)} frames).", nameof(clip));
-            _map = map ?? HumanoidDetection.Detect(clip, null, out _);
+            string note = null;
+            _map = map ?? HumanoidDetection.Detect(clip, null, out note);
+            if (!_map.IsComplete && note != null)
+                throw new ArgumentException($"The rig lacks required humanoid bones: {string.Join(", ", _map.MissingRequired())}; {note}.", nameof(clip));
             _map.RequireComplete(nameof(clip));
             if (_options.MirrorBackwardClip && ClipConventions.LooksMirrored(clip, _map, out _, out _))
             {

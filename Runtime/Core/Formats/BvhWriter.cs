@@ -35,13 +35,13 @@ namespace AvatarGo.Core
             writer.WriteLine("Frame Time:\t" + clip.FrameTime.ToString("R", CultureInfo.InvariantCulture));
             // The clip keeps its values in joint-index order; a reader takes them in the order the hierarchy lists the
             // joints (depth first), which differs when a joint was added after another branch (found in review: a clip
-            // built with joints appended read back with an ankle 1.48 m off). So each frame is written in that order.
+            // built with a joint appended read back scrambled, a knee 178 mm off). So each frame is written in that order.
             Skeleton s = clip.Skeleton;
             var start = new int[s.JointCount];
             for (int j = 0, total = 0; j < s.JointCount; j++)
             {
                 start[j] = total;
-                total += s.IsEndSite(j) ? 0 : clip.GetChannels(j).Count;
+                total += clip.GetChannels(j).Count; // as the clip counts them (an End Site's channels, which no file writes, too)
             }
             var line = new StringBuilder(clip.ChannelCount * 10);
             for (int f = 0; f < clip.FrameCount; f++)

@@ -12,7 +12,8 @@ namespace AvatarGo.Core
         /// <summary>
         /// Detects the humanoid map of <paramref name="clip"/>'s skeleton. <paramref name="note"/> is null when the names
         /// found every required bone; otherwise it says which way the map was found (the structure, and how few bones the
-        /// names gave) or why neither way found it, and the map returned is then the names' incomplete one.
+        /// names gave) or why neither way found it. When neither does, the map returned is incomplete: the names' when the
+        /// structure refused, the structure's with the bones given explicitly when those take a required bone's place.
         /// </summary>
         /// <exception cref="ArgumentException">An override names a joint the skeleton does not have.</exception>
         public static HumanoidMap Detect(BvhClip clip, IReadOnlyDictionary<string, HumanoidBone> overrides, out string note)
@@ -24,17 +25,23 @@ namespace AvatarGo.Core
             HumanoidMap byStructure = HumanoidStructure.Detect(clip, out string failure);
             if (byStructure == null)
             {
-                note = $"the names give {Bones(byNames.Count)}, and the hierarchy does not read as a humanoid either: {failure}";
+                note = $"{Given(byNames.Count, overrides)}, and the hierarchy does not read as a humanoid either: {failure}";
                 return byNames;
             }
             HumanoidMap merged = WithOverrides(byStructure, overrides);
-            if (!merged.IsComplete)
-            {
-                note = $"the names give {Bones(byNames.Count)}; the hierarchy gives them all, but the bones given explicitly leave {string.Join(", ", merged.MissingRequired())} unfound";
-                return byNames;
-            }
-            note = $"the names give {Bones(byNames.Count)}: all were found from the hierarchy and the motion instead (Documentation~/skeletons.md)";
+            note = merged.IsComplete
+                ? $"{Given(byNames.Count, overrides)}: all were found from the hierarchy and the motion instead (Documentation~/skeletons.md)"
+                : $"{Given(byNames.Count, overrides)}; the hierarchy gives them all, but the bones given explicitly take the place of {string.Join(", ", merged.MissingRequired())}";
+            // Incomplete or not, the structure with the bones given: what is missing and the note agree.
             return merged;
+        }
+
+        // How many bones the names found, the bones given explicitly counted apart.
+        private static string Given(int found, IReadOnlyDictionary<string, HumanoidBone> overrides)
+        {
+            int given = overrides?.Count ?? 0;
+            string names = $"the names give {Bones(found - given)}";
+            return given == 0 ? names : $"{names} (and {Bones(given)} given explicitly)";
         }
 
         private static string Bones(int count) => count == 1 ? "1 humanoid bone" : $"{count} humanoid bones";

@@ -9,7 +9,7 @@ namespace AvatarGo.Core
     /// fallback for rigs whose names <see cref="HumanoidNaming"/> cannot read (numbered joints, names in another language).
     /// It reads nothing that the rest pose or the bones' local axes decide: bone lengths and angles are measured on the
     /// joints' world positions in the frames given (lengths as medians over the frames, and a joint bends when it does in
-    /// one frame in fifty, so a glitch in one frame changes nothing).
+    /// one frame in fifty and in two at least, so a glitch in one frame changes nothing).
     /// </summary>
     /// <remarks>
     /// The rules, in order (a person's proportions, not any rig's):
@@ -19,7 +19,7 @@ namespace AvatarGo.Core
     /// The chest is the hub with a further, shorter branch, the head; if both or neither have one, the hub whose limbs have
     /// the longer bones carries the legs. The hips are the lowest common ancestor of the two hubs.</item>
     /// <item>Each <b>limb</b> follows, from its hub, the child with the longest reach at every joint. Joints the limb passes
-    /// straight through (within 3° in all but fewer than one frame in fifty: twist joints) or that sit on their parent
+    /// straight through (within 3° but in fewer than two frames, or one in fifty: twist joints) or that sit on their parent
     /// are not articulations (of joints in one place, the first is). Of the segments between articulations, the two
     /// consecutive ones with the greatest total length, within a factor of 1.67 of each other and longer than every
     /// segment before them, are the upper and lower limb (thigh and shin, upper arm and forearm); the articulation they
@@ -45,8 +45,8 @@ namespace AvatarGo.Core
         public const float HeadHeightShare = 0.04f;
 
         /// <summary>
-        /// A joint whose bones in and out stay within this angle (degrees) in all but fewer than one frame in fifty is not an
-        /// articulation.
+        /// A joint whose bones in and out stay within this angle (degrees) in all frames but fewer than two (or than one in
+        /// fifty) is not an articulation.
         /// </summary>
         public const float StraightDegrees = 3f;
 
@@ -383,8 +383,9 @@ namespace AvatarGo.Core
             {
                 // On its neighbour: not a joint of its own.
                 if (!(Distance(before, at) > 1e-4f * _longest) || !(Distance(at, after) > 1e-4f * _longest)) return false;
-                // Bent in one frame in fifty (at least one): a glitch in a single frame does not make a twist joint a joint.
-                int needed = Math.Max(1, _frames.Count / 50), bent = 0;
+                // Bent in one frame in fifty and in two at least (one, when there is only one): a glitch in a single frame
+                // does not make a twist joint a joint.
+                int needed = _frames.Count < 2 ? 1 : Math.Max(2, _frames.Count / 50), bent = 0;
                 foreach (Vector3[] frame in _frames)
                 {
                     Vector3 a = frame[at] - frame[before], b = frame[after] - frame[at];

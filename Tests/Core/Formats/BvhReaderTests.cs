@@ -194,7 +194,7 @@ namespace AvatarGo.Core.Tests
         /// <summary>
         /// A skeleton whose joints are valid (parents first) but not in depth-first order, a joint added to an early branch
         /// after the others: the writer lists the hierarchy depth first and must write each frame's values in that order
-        /// too (found in review: they were written in index order, and such a clip read back with an ankle 1.48 m off).
+        /// too (found in review: they were written in index order, and such a clip read back with a knee 178 mm off).
         /// </summary>
         [Test]
         public void AJointAddedAfterTheOthersIsWrittenWhereTheHierarchyListsIt()

@@ -41,5 +41,17 @@ namespace AvatarGo.Core.Tests
             Assert.That(map.Has(HumanoidBone.Neck), Is.False);
             Assert.That(map[HumanoidBone.LeftHand], Is.EqualTo(found[HumanoidBone.LeftHand]), "the other bones are the structure's");
         }
+
+        [Test]
+        public void ABoneGivenExplicitlyInAnotherBonesPlaceLeavesThatBoneMissingAndSaysWhich()
+        {
+            BvhClip clip = HumanoidStructureTests.Numbered(MocapBank());
+            HumanoidMap found = HumanoidStructure.Detect(clip, out _);
+            string elbow = found.NameOf(HumanoidBone.LeftLowerArm);
+            HumanoidMap map = HumanoidDetection.Detect(clip, new Dictionary<string, HumanoidBone> { [elbow] = HumanoidBone.LeftHand }, out string note);
+            Assert.That(map.MissingRequired(), Is.EqualTo(new[] { HumanoidBone.LeftLowerArm }), "what is missing is what the note names");
+            StringAssert.Contains("the names give 1 humanoid bone (and 1 humanoid bone given explicitly)", note);
+            StringAssert.Contains("take the place of LeftLowerArm", note);
+        }
     }
 }

@@ -38,13 +38,15 @@ public sealed class DemoCommand : ICommand
         BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
         SessionSimulator simulator;
         string note = null;
+        HumanoidMap map = null;
         try
         {
-            simulator = new SessionSimulator(clip, options, BoneMapFile.Detect(clip, mapPath, out note));
+            map = BoneMapFile.Detect(clip, mapPath, out note);
+            simulator = new SessionSimulator(clip, options, map);
         }
         catch (ArgumentException e)
         {
-            stderr.WriteLine($"avatargo demo: {Path.GetFileName(bvh)} cannot be simulated: {e.Message.Split(" (Parameter '")[0]}{(note != null ? "; " + note : "")}");
+            stderr.WriteLine($"avatargo demo: {Path.GetFileName(bvh)} cannot be simulated: {e.Message.Split(" (Parameter '")[0].TrimEnd('.')}{SimulateCommand.MissingNote(map, note)}");
             return 1;
         }
         string session = Path.Combine(Path.GetTempPath(), $"avatargo-demo-{Environment.ProcessId}.agsession");

@@ -53,13 +53,15 @@ public sealed class SimulateCommand : ICommand
         BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
         SessionSimulator simulator;
         string note = null;
+        HumanoidMap map = null;
         try
         {
-            simulator = new SessionSimulator(clip, options, BoneMapFile.Detect(clip, mapPath, out note));
+            map = BoneMapFile.Detect(clip, mapPath, out note);
+            simulator = new SessionSimulator(clip, options, map);
         }
         catch (ArgumentException e)
         {
-            stderr.WriteLine($"avatargo simulate: {Path.GetFileName(bvh)} cannot be simulated: {FirstLine(e)}{(note != null ? "; " + note : "")}");
+            stderr.WriteLine($"avatargo simulate: {Path.GetFileName(bvh)} cannot be simulated: {FirstLine(e).TrimEnd('.')}{MissingNote(map, note)}");
             return 1;
         }
         if (!WriteSession(simulator, output, stderr, "simulate")) return 1;
@@ -68,6 +70,10 @@ public sealed class SimulateCommand : ICommand
         if (note != null) stdout.WriteLine(note);
         return 0;
     }
+
+    /// <summary>Why the bones were not found (the detection's note), when they were not: appended to a refusal.</summary>
+    internal static string MissingNote(HumanoidMap map, string note) =>
+        map != null && !map.IsComplete && note != null ? "; " + note : "";
 
     /// <summary>Says what the simulator changed about the clip before wearing it: mirrored it, stood it up.</summary>
     internal static void PrintClipNotes(SessionSimulator simulator, TextWriter stdout)

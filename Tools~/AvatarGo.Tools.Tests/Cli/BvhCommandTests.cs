@@ -182,6 +182,7 @@ public class BvhCommandTests
             Assert.That(run.ExitCode, Is.EqualTo(1), run.Stdout);
             StringAssert.Contains("lacks required humanoid bones", run.Stderr);
             StringAssert.Contains("the hierarchy does not read as a humanoid either: 0 joint(s) where three long branches meet", run.Stderr);
+            StringAssert.DoesNotContain(".;", run.Stderr);
             Assert.That(File.Exists(session), Is.False, "no session written");
         }
         finally { Directory.Delete(dir, true); }
