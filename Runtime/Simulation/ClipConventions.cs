@@ -11,8 +11,6 @@ namespace AvatarGo.Simulation
     /// </summary>
     public static class ClipConventions
     {
-        private const float BentKneeDegrees = 20f;
-
         /// <summary>
         /// The turn that would stand <paramref name="clip"/> up (<see cref="SessionSimulator.Upright"/>, which gives the rule):
         /// the identity for a clip whose up is +Y or whose frames disagree about their up.
@@ -62,7 +60,7 @@ namespace AvatarGo.Simulation
         /// <summary>
         /// Counts, over every frame of <paramref name="clip"/> and both knees bent 20° or more, the knees that bend forward and
         /// those that bend backward: the knee's hinge axis (the thigh crossed with the shin) against the hip line (left to
-        /// right hip); a hinge axis more than 60° from the hip line counts neither way. It reads the legs and the pelvis only,
+        /// right hip); a hinge axis more than 60° from the hip line counts neither way (<see cref="KneeBend.Direction"/>). It reads the legs and the pelvis only,
         /// so a trunk folded forward or a clip lying down changes nothing, nor do the rest pose, the bones' axes or the up axis.
         /// </summary>
         public static void CountKneeBends(BvhClip clip, HumanoidMap map, out int forward, out int backward)
@@ -73,7 +71,6 @@ namespace AvatarGo.Simulation
             Skeleton s = clip.Skeleton;
             var local = new RigidPose[s.JointCount];
             var world = new RigidPose[s.JointCount];
-            float bent = MathF.Cos(BentKneeDegrees * Rotations.Deg2Rad);
             for (int f = 0; f < clip.FrameCount; f++)
             {
                 clip.GetWorldPoses(f, local, world);
@@ -87,19 +84,11 @@ namespace AvatarGo.Simulation
                     Vector3 hip = side == 0 ? leftHip : rightHip;
                     Vector3 knee = world[map[HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, body)]].Position;
                     Vector3 ankle = world[map[HumanoidBones.OnSide(HumanoidBone.LeftFoot, body)]].Position;
-                    Vector3 thigh = knee - hip, shin = ankle - knee;
-                    if (!(thigh.LengthSquared() > 1e-12f && shin.LengthSquared() > 1e-12f)) continue;
-                    thigh = Vector3.Normalize(thigh);
-                    shin = Vector3.Normalize(shin);
-                    if (Vector3.Dot(thigh, shin) > bent) continue;
-                    // A knee bending forward turns the shin back under the thigh: thigh × shin points to the body's right.
-                    float along = Vector3.Dot(Vector3.Normalize(Vector3.Cross(thigh, shin)), hipLine);
-                    if (along > HingeOnHipLine) forward++;
-                    else if (along < -HingeOnHipLine) backward++;
+                    int bend = KneeBend.Direction(hip, knee, ankle, hipLine);
+                    if (bend > 0) forward++;
+                    else if (bend < 0) backward++;
                 }
             }
         }
-
-        private const float HingeOnHipLine = 0.5f; // cos 60°
     }
 }

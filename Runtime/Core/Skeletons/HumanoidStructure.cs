@@ -31,7 +31,7 @@ namespace AvatarGo.Core
     /// ponytail end it; the branch's first joint, when it is not the head, is the neck. The joints between the hips and
     /// the neck are the spine: Spine, Chest, UpperChest, as <see cref="HumanoidNaming"/> counts them.</item>
     /// <item><b>Sides</b>: each arm goes with the leg whose hip is nearer its shoulder; left is the side whose knees then bend
-    /// forward (as <c>ClipConventions.CountKneeBends</c> reads a knee); with no bent knee in the frames, the side the body's
+    /// forward (<see cref="KneeBend.Direction"/>); with no bent knee in the frames, the side the body's
     /// left is on when the toes point forward (in Unity's left-handed frame, in which <see cref="BvhClip"/> gives the joints).</item>
     /// </list>
     /// Fingers and eyes are not looked for: a hand found this way takes the walk-in offset, without finger IK.
@@ -59,7 +59,6 @@ namespace AvatarGo.Core
         /// <summary>The two legs (arms) are within this factor of each other's length, or the structure is refused.</summary>
         public const float SidesRatio = 1.25f;
 
-        private const float BentKneeDegrees = 20f;
         private const int MaximumFrames = 120;
 
         /// <summary>
@@ -479,7 +478,6 @@ namespace AvatarGo.Core
 
             private int FirstIsLeft(Limb[] legs, int hips, int chest, int toe0, int toe1)
             {
-                float bent = MathF.Cos(BentKneeDegrees * MathF.PI / 180f);
                 int forward = 0, backward = 0;
                 float toes = 0f;
                 foreach (Vector3[] frame in _frames)
@@ -491,15 +489,9 @@ namespace AvatarGo.Core
                     for (int k = 0; k < 2; k++)
                     {
                         Limb leg = legs[k];
-                        Vector3 thigh = frame[leg.Lower] - frame[leg.Upper], shin = frame[leg.End] - frame[leg.Lower];
-                        if (thigh.LengthSquared() > 0f && shin.LengthSquared() > 0f &&
-                            Vector3.Dot(Vector3.Normalize(thigh), Vector3.Normalize(shin)) <= bent)
-                        {
-                            // As ClipConventions reads a knee: bending forward, thigh × shin points to the body's right.
-                            float along = Vector3.Dot(Vector3.Normalize(Vector3.Cross(thigh, shin)), hipLine);
-                            if (along > 0.5f) forward++;
-                            else if (along < -0.5f) backward++;
-                        }
+                        int bend = KneeBend.Direction(frame[leg.Upper], frame[leg.Lower], frame[leg.End], hipLine);
+                        if (bend > 0) forward++;
+                        else if (bend < 0) backward++;
                         int toe = k == 0 ? toe0 : toe1;
                         if (toe < 0) continue;
                         Vector3 forwardOfBody = frame[toe] - frame[leg.End];
