@@ -17,7 +17,8 @@ namespace AvatarGo.Core
     /// <remarks>
     /// Each frame runs projected gradient descent to convergence (Polyak step size with backtracking, analytic
     /// gradients from the SDF gradients and the joints' rotation axes, parameters clamped to [0, 1]) until no
-    /// parameter moves more than 2e-3 (0.2° at a joint) or after <see cref="MaxIterations"/>. Every frame starts
+    /// parameter moves more than 2e-3 (0.2° at a joint), a step that small no longer lowers the cost, or after
+    /// <see cref="MaxIterations"/>. Every frame starts
     /// from the grip solved once, at construction, for the nominal hold (from the best point of a coarse grid),
     /// not from the last frame, so the result depends on the controller's pose, not on the frame rate.
     /// No allocation per frame.
@@ -213,23 +214,36 @@ namespace AvatarGo.Core
                 bool improved = false;
                 Vector4 next = t, nextGrad = grad;
                 float nextCost = cost;
+                float moved = 0f;
                 for (int backtrack = 0; backtrack < 8; backtrack++)
                 {
                     next = Vector4.Clamp(t - step * grad, Vector4.Zero, thumb ? Vector4.One : new Vector4(1f, 1f, 1f, 0f));
+                    moved = LargestChange(next, t);
                     nextCost = Cost(f, next, out nextGrad);
                     if (nextCost < cost) { improved = true; break; }
+                    // A step too small to count as a move did not lower the cost either: converged. (The halvings
+                    // after it could only move t less than that; this is where a finger resting on the surface, at
+                    // the kink of the cost's absolute value, used to spend all eight of them.)
+                    if (moved < ConvergedChange) break;
                     step *= 0.5f;
                 }
                 if (!improved) break;
                 lastStep = step;
-                Vector4 change = Vector4.Abs(next - t);
-                float moved = Math.Max(Math.Max(change.X, change.Y), Math.Max(change.Z, change.W));
                 t = next; cost = nextCost; grad = nextGrad;
-                if (moved < 2e-3f) { iterations++; break; }
+                if (moved < ConvergedChange) { iterations++; break; }
             }
             _solved[o] = t.X; _solved[o + 1] = t.Y; _solved[o + 2] = t.Z;
             if (thumb) _solved[FingerParameters.ThumbSpreadIndex] = t.W;
             return iterations;
+        }
+
+        // The descent has converged when no parameter moves more than this (0.2° at a joint).
+        private const float ConvergedChange = 2e-3f;
+
+        private static float LargestChange(Vector4 a, Vector4 b)
+        {
+            Vector4 change = Vector4.Abs(a - b);
+            return Math.Max(Math.Max(change.X, change.Y), Math.Max(change.Z, change.W));
         }
 
         // The cost of finger f at parameters t (x, y, z its joints, w the thumb's spread) and its gradient.

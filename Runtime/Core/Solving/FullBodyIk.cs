@@ -48,6 +48,13 @@ namespace AvatarGo.Core
         private static float HoldWeight(float neededDegrees) =>
             Math.Clamp((HoldFadeEndDegrees - neededDegrees) / (HoldFadeEndDegrees - MaxClavicleDegrees), 0f, 1f);
         private readonly int[] _spinePath;
+        private readonly int[] _spineIndexOnPath;     // each path joint's index in _spine, -1 for a joint between them
+        // What a frame's solve reads before its final forward kinematics, the joints it updates on the way (parents
+        // first): the joints above the hips (before they are placed: a floor-level root, when the origin moved); the
+        // spine's first joint, the legs' roots and every joint above them (after the hips are placed); where each arm
+        // starts (its clavicle, else its upper arm) and every joint above (after the spine and head). Nothing the solve
+        // reads is left from an earlier frame's world poses.
+        private readonly int[] _aboveHips, _beforeSpineAndLegs, _beforeArms;
         private readonly int _neck = -1;              // the neck, when it is the last spine joint and more come before it
         private readonly Vector3 _neckInHead;         // the neck joint in the head's frame, in the reference pose
         private float _spinePhi;                      // the last spine solve's turn per joint
@@ -80,6 +87,8 @@ namespace AvatarGo.Core
                 for (int j = _head; j != _spine[0]; j = s.GetParent(j)) path.Insert(0, j);
             if (_spine.Length > 0) path.Insert(0, _spine[0]);
             _spinePath = path.ToArray();
+            _spineIndexOnPath = new int[_spinePath.Length];
+            for (int k = 0; k < _spinePath.Length; k++) _spineIndexOnPath[k] = Array.IndexOf(_spine, _spinePath[k]);
             _spineReference = new Quaternion[_spine.Length];
             for (int i = 0; i < _spine.Length; i++)
                 _spineReference[i] = reference != null ? reference.Local[_spine[i]].Rotation : s.GetRestLocal(_spine[i]).Rotation;
@@ -98,6 +107,9 @@ namespace AvatarGo.Core
             _rightArm = new LimbChain(s, map[HumanoidBone.RightUpperArm], map[HumanoidBone.RightLowerArm], map[HumanoidBone.RightHand]);
             _leftShoulder = new Shoulder(s, map[HumanoidBone.LeftShoulder], _leftArm.Root, _neck, refLocal, refWorld);
             _rightShoulder = new Shoulder(s, map[HumanoidBone.RightShoulder], _rightArm.Root, _neck, refLocal, refWorld);
+            _aboveHips = AncestorsOrSelf(s, -1, s.GetParent(_hips));
+            _beforeSpineAndLegs = AncestorsOrSelf(s, -1, _spine.Length > 0 ? _spine[0] : _head, _leftLeg.Root, _rightLeg.Root);
+            _beforeArms = AncestorsOrSelf(s, -1, ArmStart(_leftShoulder, _leftArm), ArmStart(_rightShoulder, _rightArm));
         }
 
         /// <summary>
@@ -133,9 +145,9 @@ namespace AvatarGo.Core
         public HumanoidMap Map { get; }
 
         /// <summary>
-        /// Poses <paramref name="pose"/> (its previous content is the starting point and what inactive parts keep), as a
-        /// single frame: no shrug is held from earlier frames or kept for later ones. On return
-        /// <see cref="SkeletonPose.World"/> is up to date.
+        /// Poses <paramref name="pose"/> (its local transforms are the starting point and what inactive parts keep; its
+        /// world transforms are recomputed where they are read, never taken from earlier), as a single frame: no shrug is
+        /// held from earlier frames or kept for later ones. On return <see cref="SkeletonPose.World"/> is up to date.
         /// </summary>
         public IkReport Solve(in BodyTargets targets, SkeletonPose pose) => Solve(in targets, pose, 0f, false);
 
@@ -152,8 +164,9 @@ namespace AvatarGo.Core
             if (pose == null) throw new ArgumentNullException(nameof(pose));
             var report = new IkReport();
             RigidPose[] w = pose.World;
+            pose.UpdateWorld(_aboveHips);
             if (targets.HipsActive && targets.Hips.IsValid) pose.SetWorldPose(_hips, targets.Hips);
-            pose.UpdateWorld();
+            pose.UpdateWorld(_beforeSpineAndLegs);
 
             if (targets.HeadActive && targets.Head.IsValid)
             {
@@ -172,8 +185,8 @@ namespace AvatarGo.Core
                 }
                 report.HeadDistanceLeft = Vector3.Distance(w[_head].Position, targets.Head.Position);
                 pose.SetWorldRotation(_head, targets.Head.Rotation);
-                pose.UpdateWorld();
             }
+            pose.UpdateWorld(_beforeArms);
 
             if (targets.LeftFoot.IsActive) report.LeftFoot = TwoBoneIk.Solve(pose, _leftLeg, targets.LeftFoot.Goal, targets.LeftFoot.Hint);
             if (targets.RightFoot.IsActive) report.RightFoot = TwoBoneIk.Solve(pose, _rightLeg, targets.RightFoot.Goal, targets.RightFoot.Hint);
@@ -224,13 +237,14 @@ namespace AvatarGo.Core
             // The second solve (to the neck) starts from the first's answer: the joints below the neck bend about as much.
             float phiA = toNeck ? _spinePhi : alpha / _spine.Length;
             float fA = BendSpine(pose, axis, phiA, count, end) - wanted;
-            float bestPhi = phiA, bestF = Math.Abs(fA);
+            float bestPhi = phiA, bestF = Math.Abs(fA), posedPhi = phiA;
             // Too long: bend more (away from upright, the reference's straightest); too short: bend less.
             float direction = phiA >= 0f ? 1f : -1f;
             float phiB = phiA + (fA > 0f ? 0.02f : -0.02f) * direction;
             for (int i = 0; i < SpineIterations && bestF > SpineTolerance; i++)
             {
                 float fB = BendSpine(pose, axis, phiB, count, end) - wanted;
+                posedPhi = phiB;
                 if (Math.Abs(fB) < bestF) { bestF = Math.Abs(fB); bestPhi = phiB; }
                 float slope = (fB - fA) / (phiB - phiA);
                 if (!(Math.Abs(slope) > 1e-6f)) break;
@@ -240,7 +254,7 @@ namespace AvatarGo.Core
                 if (!Vectors.IsFinite(next) || next == phiB) break;
                 phiA = phiB; fA = fB; phiB = next;
             }
-            BendSpine(pose, axis, bestPhi, count, end);
+            if (posedPhi != bestPhi) BendSpine(pose, axis, bestPhi, count, end); // the pose is a function of φ alone
             _spinePhi = bestPhi;
             Quaternion aim = Rotations.FromTo(w[end].Position - origin, endTarget - origin);
             pose.RotateWorld(_spine[0], aim);
@@ -262,18 +276,31 @@ namespace AvatarGo.Core
         }
 
         // Sets the spine to its reference with each of its first count joints turned by phi about the world axis
-        // (the others keep their reference); returns the distance from the first spine joint to joint end.
+        // (the others keep their reference); returns the distance from the first spine joint to joint end. One pass
+        // down the spine's path: each joint's world pose from its parent's, then, for a turned spine joint, the turn
+        // applied about its own position (which it does not move), as turning the joints one by one from the bottom
+        // and updating the path after each would give, at a path's cost instead of one per turned joint.
         private float BendSpine(SkeletonPose pose, Vector3 axis, float phi, int count, int end)
         {
             Quaternion turn = Quaternion.CreateFromAxisAngle(axis, phi);
-            for (int i = 0; i < _spine.Length; i++) pose.Local[_spine[i]] = pose.Local[_spine[i]].WithRotation(_spineReference[i]);
-            pose.UpdateWorld(_spinePath);
-            for (int i = 0; i < count; i++)
+            RigidPose[] local = pose.Local, world = pose.World;
+            Skeleton s = pose.Skeleton;
+            for (int k = 0; k < _spinePath.Length; k++)
             {
-                pose.RotateWorld(_spine[i], turn);
-                pose.UpdateWorld(_spinePath);
+                int j = _spinePath[k], spineIndex = _spineIndexOnPath[k];
+                int parent = s.GetParent(j);
+                RigidPose parentWorld = parent < 0 ? pose.Origin : world[parent];
+                if (spineIndex >= 0) local[j] = local[j].WithRotation(_spineReference[spineIndex]);
+                RigidPose placed = parentWorld * local[j];
+                if (spineIndex >= 0 && spineIndex < count)
+                {
+                    Quaternion turned = Quaternion.Normalize(turn * placed.Rotation);
+                    local[j] = local[j].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(parentWorld.Rotation) * turned));
+                    placed = parentWorld * local[j];
+                }
+                world[j] = placed;
             }
-            return Vector3.Distance(pose.World[_spine[0]].Position, pose.World[end].Position);
+            return Vector3.Distance(world[_spine[0]].Position, world[end].Position);
         }
 
         // An arm starts from its clavicle's held shrug (the calibration pose's clavicle when none is held); if its hand still
@@ -302,6 +329,20 @@ namespace AvatarGo.Core
             if (hold) shoulder.Held = Quaternion.Normalize(Quaternion.Slerp(shoulder.Held, shrug, HoldWeight(needed)));
             return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
         }
+
+        // The joint `self` (unless -1), each of the others (-1: none) and every joint above them, each once, parents first.
+        private static int[] AncestorsOrSelf(Skeleton s, int self, params int[] below)
+        {
+            var joints = new SortedSet<int>();
+            if (self >= 0) joints.Add(self);
+            foreach (int joint in below)
+                for (int j = joint; j >= 0; j = s.GetParent(j)) joints.Add(j);
+            var list = new int[joints.Count];
+            joints.CopyTo(list);
+            return list;
+        }
+
+        private static int ArmStart(Shoulder shoulder, LimbChain arm) => shoulder.Clavicle >= 0 ? shoulder.Clavicle : arm.Root;
 
         // One side's shoulder: the clavicle (-1: the rig has none), the joint whose frame its rotation and shrug are kept in
         // (its parent; the joint below the neck when it hangs from a neck that follows the head, as 3ds Max Biped's do, so

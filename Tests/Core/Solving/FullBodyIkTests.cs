@@ -191,6 +191,59 @@ namespace AvatarGo.Core.Tests
             Approx.Near(targets.LeftFoot.Goal.Position, pose.World[truth[HumanoidBone.LeftFoot]].Position, 0.001f, "left foot");
         }
 
+        /// <summary>
+        /// The solve updates only the world poses it reads on the way (a handful of joints above the spine, legs and arms)
+        /// and runs the whole skeleton's forward kinematics once, at the end. So what a pose's world transforms held on
+        /// entry must never matter: a pose whose world transforms are overwritten with NaN before every frame is solved to
+        /// exactly the same local and world transforms as one whose world transforms are the last frame's, on rigs with
+        /// joints between the humanoid bones (a floor-level root above the hips, a joint below the spine's first bone and
+        /// above each clavicle, twist joints), with clavicles hanging from the neck and with none, over 120 frames with the
+        /// shrugs held.
+        /// </summary>
+        [TestCase("plain")]
+        [TestCase("floor root")]
+        [TestCase("joints between")]
+        [TestCase("twist joints")]
+        [TestCase("clavicles under the neck")]
+        [TestCase("no clavicles")]
+        public void WhatThePoseHeldInWorldOnEntryChangesNothing(string rig)
+        {
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            HumanoidMap original = HumanoidNaming.Detect(clip.Skeleton);
+            string Name(HumanoidBone b) => clip.Skeleton.GetName(original[b]);
+            clip = rig switch
+            {
+                "floor root" => Topology.WithFloorRoot(clip),
+                "joints between" => Topology.WithJointsAbove(clip, (Name(HumanoidBone.Chest), "LowerBack", 0.3f),
+                    (Name(HumanoidBone.LeftShoulder), "LeftGirdle", 0.5f), (Name(HumanoidBone.RightShoulder), "RightGirdle", 0.5f)),
+                "twist joints" => Topology.WithTwistJoints(clip),
+                "clavicles under the neck" => Topology.Reparented(clip, (Name(HumanoidBone.LeftShoulder), Name(HumanoidBone.Neck)),
+                    (Name(HumanoidBone.RightShoulder), Name(HumanoidBone.Neck))),
+                "no clavicles" => Topology.Without(clip, original[HumanoidBone.LeftShoulder], original[HumanoidBone.RightShoulder]),
+                _ => clip,
+            };
+            var truth = new Truth(clip);
+            var kept = new SkeletonPose(clip.Skeleton);
+            var stale = new SkeletonPose(clip.Skeleton);
+            var keptIk = new FullBodyIk(truth.Map);
+            var staleIk = new FullBodyIk(truth.Map);
+            var targets = new BodyTargets();
+            var nan = new RigidPose(new Vector3(float.NaN), new Quaternion(float.NaN, float.NaN, float.NaN, float.NaN));
+            for (int f = 0; f < Math.Min(120, clip.FrameCount); f++)
+            {
+                truth.Targets(f * clip.FrameCount / 120, ref targets);
+                Array.Fill(stale.World, nan);
+                keptIk.Solve(in targets, kept, 1f / 30f);
+                staleIk.Solve(in targets, stale, 1f / 30f);
+                for (int j = 0; j < clip.Skeleton.JointCount; j++)
+                {
+                    string at = $"{rig}, frame {f}, {clip.Skeleton.GetName(j)}";
+                    Assert.That(stale.Local[j], Is.EqualTo(kept.Local[j]), at + " local");
+                    Assert.That(stale.World[j], Is.EqualTo(kept.World[j]), at + " world");
+                }
+            }
+        }
+
         private static void SolveAll(FullBodyIk ik, BodyTargets[] frames, SkeletonPose pose, int passes)
         {
             for (int pass = 0; pass < passes; pass++)
