@@ -12,13 +12,15 @@ public sealed class CalibrateCommand : ICommand
     public string Name => "calibrate";
     public string Summary => "Run the Walk-In-Avatar calibration over a session and print roles, scale and offsets";
     public string Help => """
-        avatargo calibrate SESSION [--json] [--avatar FILE] [--save PROFILE]
+        avatargo calibrate SESSION [--json] [--avatar FILE [--avatar-map FILE]] [--save PROFILE]
 
         Feeds the session's frames to the calibration state machine (trigger 1: identify devices,
         validate the T-pose, scale and place the avatar; trigger 2: exact offsets) and prints the
         outcome: status, the error and its message when a step was refused, the role found for each
         device, the scale, and the offsets (each joint's position and rotation in its device's frame).
           --avatar FILE    the avatar (a BVH skeleton); default: the wearer's skeleton in the session
+          --avatar-map FILE  the humanoid bones of the avatar's joints the naming rules miss ('joint name =
+                           Bone' lines, as simulate's --map)
           --json           print the outcome as JSON (the profile format, plus status)
           --save PROFILE   save the calibration profile (atomic write)
         Exit codes: 0 calibrated, 1 unreadable session or calibration not completed, 2 bad arguments.
@@ -30,12 +32,13 @@ public sealed class CalibrateCommand : ICommand
         string path = a.Positional0("SESSION");
         bool json = a.Flag("json");
         string avatarFile = a.String("avatar");
+        string avatarMap = AvatarMapArgument(a, avatarFile);
         string save = a.String("save");
         a.ThrowOnUnknown(1);
 
         using SessionReader reader = SessionReader.Open(path);
         HumanoidMap avatar = avatarFile != null
-            ? AvatarFrom(avatarFile)
+            ? AvatarFrom(avatarFile, avatarMap)
             : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no wearer skeleton; give --avatar FILE");
         var calibrator = new Calibrator(reader.Header.Devices, avatar);
         SessionFrame frame = reader.CreateFrame();
@@ -107,14 +110,23 @@ public sealed class CalibrateCommand : ICommand
     /// motion, <see cref="HumanoidDetection"/>), or a one-line <see cref="FormatException"/> naming the file when it cannot
     /// be one (a skeleton without the required humanoid bones).
     /// </summary>
-    internal static HumanoidMap AvatarFrom(string file)
+    // --avatar-map FILE: only with --avatar (the session's own skeleton was mapped when it was simulated).
+    internal static string AvatarMapArgument(ArgReader a, string avatarFile)
     {
-        // The names, else the hierarchy and the file's motion (an avatar file with only its rest pose cannot show its
-        // knees and elbows: then the names must find them).
-        HumanoidMap map = HumanoidDetection.Detect(BvhReader.ReadFile(file, new BvhReadOptions { ToMetres = true }), null, out string note);
+        string avatarMap = a.String("avatar-map");
+        if (avatarMap != null && avatarFile == null) throw new UsageException("--avatar-map needs --avatar FILE (the session's own skeleton was mapped by simulate --map)");
+        return avatarMap;
+    }
+
+    internal static HumanoidMap AvatarFrom(string file, string mapFile = null)
+    {
+        // The bones of the map file first, then the names, else the hierarchy and the file's motion (an avatar file with
+        // only its rest pose cannot show its knees and elbows: then the names or the map must find them).
+        HumanoidMap map = BoneMapFile.Detect(BvhReader.ReadFile(file, new BvhReadOptions { ToMetres = true }), mapFile, out string note);
         var missing = map.MissingRequired();
         if (missing.Count > 0)
-            throw new FormatException($"{Path.GetFileName(file)}: not a humanoid avatar: its skeleton lacks {string.Join(", ", missing)}{(note != null ? "; " + note : "")}");
+            throw new FormatException($"{Path.GetFileName(file)}: not a humanoid avatar: its skeleton lacks {string.Join(", ", missing)}{(note != null ? "; " + note : "")}"
+                + (mapFile == null ? " (give their joints' bones with --avatar-map FILE)" : ""));
         return map;
     }
 }

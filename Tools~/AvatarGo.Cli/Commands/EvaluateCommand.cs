@@ -14,7 +14,7 @@ public sealed class EvaluateCommand : ICommand
     public string Name => "evaluate";
     public string Summary => "Replay a synthetic session and measure how closely the avatar follows";
     public string Help => """
-        avatargo evaluate SESSION [--mode exact|fixed] [--scale-mode uniform|fitted] [--avatar FILE] [--leg-scale S] [--arm-scale S]
+        avatargo evaluate SESSION [--mode exact|fixed] [--scale-mode uniform|fitted] [--avatar FILE [--avatar-map FILE]] [--leg-scale S] [--arm-scale S]
                          [--controller NAME|none] [--grip hold|open|point|input] [--hands palm|calibrated] [--json OUT]
                          [--knee-hint MODEL] [--elbow-hint MODEL] [--positions OUT.csv] [--bvh-out OUT.bvh] [--plot OUT.png]
                          [--refine] [--exercise-seconds S]
@@ -43,6 +43,8 @@ public sealed class EvaluateCommand : ICommand
           --teleports-per-minute N  per device (default 1)
           --disturb-seed N     the disturbances' seed (default 1)
           --avatar FILE        use this BVH skeleton (its rest pose, any units) as the avatar instead
+          --avatar-map FILE    the humanoid bones of the avatar's joints the naming rules miss ('joint name =
+                               Bone' lines, as simulate's --map)
           --leg-scale S        make the avatar's legs S times as long (default 1)
           --arm-scale S        make the avatar's arms S times as long (default 1)
           --scale-mode M       uniform (default, the paper's: by eye height) or fitted (legs and arms fitted to the
@@ -78,6 +80,7 @@ public sealed class EvaluateCommand : ICommand
         OffsetMode mode = ParseMode(a.String("mode", "exact"));
         string json = a.String("json");
         string avatarFile = a.String("avatar");
+        string avatarMap = CalibrateCommand.AvatarMapArgument(a, avatarFile);
         float legScale = (float)a.Double("leg-scale", 1), armScale = (float)a.Double("arm-scale", 1);
         PipelineSettings settings = Settings(a, mode);
         settings.Calibration.Proportions.Mode = a.String("scale-mode", "uniform") switch
@@ -102,7 +105,7 @@ public sealed class EvaluateCommand : ICommand
         using (SessionReader reader = SessionReader.Open(path))
         {
             HumanoidMap avatar = avatarFile != null
-                ? CalibrateCommand.AvatarFrom(avatarFile)
+                ? CalibrateCommand.AvatarFrom(avatarFile, avatarMap)
                 : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no ground-truth skeleton; give --avatar FILE");
             if (legScale != 1f || armScale != 1f) avatar = Proportions.ScaleLimbs(avatar, legScale, armScale);
             report = exercise

@@ -147,6 +147,48 @@ public class FileSafetyCommandTests
         Assert.That(Mpjpe(other), Is.EqualTo(Mpjpe(own)).Within(0.01), "MPJPE (mm)");
     }
 
+    /// <summary>
+    /// `--avatar-map`: an avatar file of its rest pose alone (one frame: its knees and elbows cannot show) whose left arm's
+    /// names say nothing is refused, naming the bones it lacks; with a map file giving those three joints their bones,
+    /// `calibrate` calibrates and `evaluate` gives the figures of the session's own skeleton (the same skeleton). Without
+    /// `--avatar` the map is a usage error (the session's skeleton was mapped when it was simulated).
+    /// </summary>
+    [Test]
+    public void AnAvatarMapGivesTheBonesAnAvatarFilesNamesMiss()
+    {
+        string text = File.ReadAllText(Paths.Mocap("mocapbank_30fps.bvh"));
+        string renamed = text.Replace("JOINT LeftShoulder", "JOINT Bone.010").Replace("JOINT LeftElbow", "JOINT Bone.011").Replace("JOINT LeftWrist", "JOINT Bone.012");
+        // The rest pose alone: the hierarchy, then one frame of zeros.
+        string[] lines = renamed.Split('\n');
+        int frames = Array.FindIndex(lines, l => l.StartsWith("Frames:"));
+        int channels = lines[frames + 2].Split((char[])null, StringSplitOptions.RemoveEmptyEntries).Length;
+        string restOnly = string.Join("\n", lines.Take(frames)) + "\nFrames: 1\n" + lines[frames + 1] + "\n" + string.Join(" ", Enumerable.Repeat("0", channels)) + "\n";
+        string avatar = Path.Combine(_dir, "rest.bvh"), map = Path.Combine(_dir, "map.txt"), session = Path.Combine(_dir, "s.agsession");
+        File.WriteAllText(avatar, restOnly);
+        File.WriteAllText(map, "Bone.010 = LeftUpperArm\nBone.011 = LeftLowerArm\nBone.012 = LeftHand\n");
+        Assert.That(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--out", session).ExitCode, Is.EqualTo(0));
+
+        var refused = CliRunner.Run("evaluate", session, "--avatar", avatar);
+        Assert.That(refused.ExitCode, Is.EqualTo(1), refused.ToString());
+        StringAssert.Contains("its skeleton lacks LeftUpperArm, LeftLowerArm, LeftHand", refused.Stderr);
+        StringAssert.Contains("--avatar-map FILE", refused.Stderr);
+
+        var calibrated = CliRunner.Run("calibrate", session, "--avatar", avatar, "--avatar-map", map);
+        Assert.That(calibrated.ExitCode, Is.EqualTo(0), calibrated.ToString());
+        StringAssert.StartsWith("status: calibrated", calibrated.Stdout);
+        string own = Path.Combine(_dir, "own.json"), mapped = Path.Combine(_dir, "mapped.json");
+        var a = CliRunner.Run("evaluate", session, "--json", own);
+        var b = CliRunner.Run("evaluate", session, "--avatar", avatar, "--avatar-map", map, "--json", mapped);
+        Assert.That(a.ExitCode, Is.EqualTo(0), a.ToString());
+        Assert.That(b.ExitCode, Is.EqualTo(0), b.ToString());
+        double Mpjpe(string json) => System.Text.Json.JsonDocument.Parse(File.ReadAllText(json)).RootElement.GetProperty("mpjpe_mm").GetDouble();
+        Assert.That(Mpjpe(mapped), Is.EqualTo(Mpjpe(own)).Within(0.01), "MPJPE (mm)");
+
+        var noAvatar = CliRunner.Run("evaluate", session, "--avatar-map", map);
+        Assert.That(noAvatar.ExitCode, Is.EqualTo(2), noAvatar.ToString());
+        StringAssert.Contains("--avatar-map needs --avatar", noAvatar.Stderr);
+    }
+
     // ---- Child processes -------------------------------------------------------------------------------
 
     private static Process StartCli(params string[] args)
