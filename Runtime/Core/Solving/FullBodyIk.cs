@@ -51,10 +51,11 @@ namespace AvatarGo.Core
         private readonly int[] _spineIndexOnPath;     // each path joint's index in _spine, -1 for a joint between them
         // What a frame's solve reads before its final forward kinematics, the joints it updates on the way (parents
         // first): the joints above the hips (before they are placed: a floor-level root, when the origin moved); the
-        // spine's first joint, the legs' roots and every joint above them (after the hips are placed); where each arm
-        // starts (its clavicle, else its upper arm) and every joint above (after the spine and head). Nothing the solve
-        // reads is left from an earlier frame's world poses.
-        private readonly int[] _aboveHips, _beforeSpineAndLegs, _beforeArms;
+        // spine's first joint and the legs' roots, which the spine's bend axis reads, and every joint above them (after the
+        // hips are placed); where each arm starts (its clavicle, else its upper arm), the legs' roots and every joint above
+        // them (after the spine and head: a rig may hang its thighs from a spine joint). Nothing the solve reads is left
+        // from an earlier frame's world poses or from before a joint above it moved.
+        private readonly int[] _aboveHips, _beforeSpineAndLegs, _beforeLimbs;
         private readonly int _neck = -1;              // the neck, when it is the last spine joint and more come before it
         private readonly Vector3 _neckInHead;         // the neck joint in the head's frame, in the reference pose
         private float _spinePhi;                      // the last spine solve's turn per joint
@@ -109,7 +110,7 @@ namespace AvatarGo.Core
             _rightShoulder = new Shoulder(s, map[HumanoidBone.RightShoulder], _rightArm.Root, _neck, refLocal, refWorld);
             _aboveHips = AncestorsOrSelf(s, -1, s.GetParent(_hips));
             _beforeSpineAndLegs = AncestorsOrSelf(s, -1, _spine.Length > 0 ? _spine[0] : _head, _leftLeg.Root, _rightLeg.Root);
-            _beforeArms = AncestorsOrSelf(s, -1, ArmStart(_leftShoulder, _leftArm), ArmStart(_rightShoulder, _rightArm));
+            _beforeLimbs = AncestorsOrSelf(s, -1, ArmStart(_leftShoulder, _leftArm), ArmStart(_rightShoulder, _rightArm), _leftLeg.Root, _rightLeg.Root);
         }
 
         /// <summary>
@@ -186,7 +187,7 @@ namespace AvatarGo.Core
                 report.HeadDistanceLeft = Vector3.Distance(w[_head].Position, targets.Head.Position);
                 pose.SetWorldRotation(_head, targets.Head.Rotation);
             }
-            pose.UpdateWorld(_beforeArms);
+            pose.UpdateWorld(_beforeLimbs);
 
             if (targets.LeftFoot.IsActive) report.LeftFoot = TwoBoneIk.Solve(pose, _leftLeg, targets.LeftFoot.Goal, targets.LeftFoot.Hint);
             if (targets.RightFoot.IsActive) report.RightFoot = TwoBoneIk.Solve(pose, _rightLeg, targets.RightFoot.Goal, targets.RightFoot.Hint);
