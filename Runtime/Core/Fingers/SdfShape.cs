@@ -25,6 +25,10 @@ namespace AvatarGo.Core
         /// <summary>Box, rounded box: orientation of the box in the object frame.</summary>
         public readonly Quaternion Rotation;
 
+        // A box whose rotation is the identity (every shipped profile's): its frame is the controller's, and the two
+        // rotations per evaluation are skipped (turning by the identity changes no bit, so the result is the same).
+        private readonly bool _axisAligned;
+
         private SdfShape(SdfShapeKind kind, Vector3 a, Vector3 b, float radius, Quaternion rotation)
         {
             Kind = kind;
@@ -32,6 +36,7 @@ namespace AvatarGo.Core
             B = b;
             Radius = radius;
             Rotation = rotation;
+            _axisAligned = rotation == Quaternion.Identity;
         }
 
         /// <summary>A capsule around the segment <paramref name="start"/>–<paramref name="end"/>.</summary>
@@ -76,7 +81,7 @@ namespace AvatarGo.Core
                 }
                 default:
                 {
-                    Vector3 q = Vector3.Transform(p - A, Quaternion.Conjugate(Rotation));
+                    Vector3 q = _axisAligned ? p - A : Vector3.Transform(p - A, Quaternion.Conjugate(Rotation));
                     Vector3 e = Vector3.Abs(q) - B;
                     Vector3 outside = Vector3.Max(e, Vector3.Zero);
                     float outsideLength = outside.Length();
@@ -87,7 +92,7 @@ namespace AvatarGo.Core
                     else if (e.Y >= e.Z) local = Vector3.UnitY;
                     else local = Vector3.UnitZ;
                     local = new Vector3(q.X < 0 ? -local.X : local.X, q.Y < 0 ? -local.Y : local.Y, q.Z < 0 ? -local.Z : local.Z);
-                    gradient = Vector3.Transform(local, Rotation);
+                    gradient = _axisAligned ? local : Vector3.Transform(local, Rotation);
                     float radius = Kind == SdfShapeKind.RoundedBox ? Radius : 0f;
                     return outsideLength + inside - radius;
                 }
