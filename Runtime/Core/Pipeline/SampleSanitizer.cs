@@ -54,6 +54,9 @@ namespace AvatarGo.Core
         /// <summary>
         /// Writes every sample of <paramref name="samples"/> to <paramref name="accepted"/>, replaced by a lost one where it
         /// is rejected. Returns the number of samples rejected that claimed to be tracked. Allocation-free.
+        /// <paramref name="time"/> (seconds) must not go back and should advance by frame-sized steps: the speeds and
+        /// durations are measured between calls. <see cref="SelfAvatarPipeline"/> passes its own clock, which does that
+        /// whatever the frames' times do.
         /// </summary>
         public int Filter(double time, ReadOnlySpan<DeviceSample> samples, Span<DeviceSample> accepted)
         {

@@ -46,6 +46,9 @@ namespace AvatarGo.Core
         private float _armLength;
         private SwapEvidence _evidence;
         private double _lastTime = double.NaN;
+        private double _trackingClock = double.NaN;      // the tracking stages' time: advances by each frame's step (Solve)
+        private const double MaxFrameSeconds = 0.25;      // the longest step between two frames taken as it is
+        private double _regularStep = 1.0 / 90.0;         // the last step under MaxFrameSeconds (what a longer one counts)
         private FullBodyIk _ik;
         private SkeletonPose _pose, _lastGood;
         private BodyTargets _targets;
@@ -224,7 +227,7 @@ namespace AvatarGo.Core
                 return false;
             }
             DeviceRole referenceRole = role == DeviceRole.Pelvis ? DeviceRole.Head : DeviceRole.Pelvis;
-            WindowAverage device = _window.Average(_roles[role], _lastTime), reference = _window.Average(_roles[referenceRole], _lastTime);
+            WindowAverage device = _window.Average(_roles[role], _trackingClock), reference = _window.Average(_roles[referenceRole], _trackingClock);
             if (!device.IsTracked || !reference.IsTracked) { reason = "the device or the " + referenceRole + " device was not tracked through the last half second"; return false; }
             if (!device.IsStill || !reference.IsStill) { reason = "the wearer was not still through the last half second"; return false; }
             // Where the calibration pose puts the joint relative to its reference joint, placed by the reference now.
@@ -400,13 +403,24 @@ namespace AvatarGo.Core
 
         private void Solve(double time, ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip)
         {
-            float dt = !double.IsNaN(_lastTime) && time > _lastTime ? (float)Math.Min(time - _lastTime, 0.25) : 0f;
+            // The tracking stages measure the time between frames on their own clock, which advances by each frame's
+            // step. A step longer than MaxFrameSeconds either way (a recording's clock that jumps ahead, restarts, or
+            // gives one frame a time from long before; finite, so not caught above) counts as the last regular step:
+            // taken on, it would hold a part lost on that frame until the clock came back, ease it in one frame, or open
+            // the glitch filter by the jump's length (20 m/s for seconds is metres). A repeated time, or one a little
+            // earlier, is a frame in which no time passed. While the time runs forward in regular steps the clock is
+            // the frame's time.
+            double raw = double.IsNaN(_lastTime) ? 0.0 : time - _lastTime;
+            double step = Math.Abs(raw) > MaxFrameSeconds ? _regularStep : Math.Max(raw, 0.0);
+            if (raw > 0.0 && raw <= MaxFrameSeconds) _regularStep = raw;
+            float dt = (float)step;
             _lastTime = time;
-            _window.Add(time, samples);
+            _trackingClock = double.IsNaN(_trackingClock) ? time : _trackingClock + step;
+            _window.Add(_trackingClock, samples);
             // Bad samples out, lost devices' parts held and eased, returning ones blended back; without the HMD, freeze.
-            _sanitizer.Filter(time, samples, _accepted);
-            _smoothing?.Apply(time, _accepted);
-            if (!_continuity.Apply(time, _accepted, _pose, _effective))
+            _sanitizer.Filter(_trackingClock, samples, _accepted);
+            _smoothing?.Apply(_trackingClock, _accepted);
+            if (!_continuity.Apply(_trackingClock, _accepted, _pose, _effective))
             {
                 Freeze();
                 return;

@@ -116,6 +116,9 @@ namespace AvatarGo.Core
         /// after a loss) or the eased plausible one. Other devices are copied. Returns false, leaving the output a copy of the
         /// input, when the HMD is lost: the avatar should keep its last pose. <paramref name="lastSolved"/> is the avatar's
         /// last solved pose (for the shoulders). Allocation-free.
+        /// <paramref name="time"/> (seconds) must not go back and should advance by frame-sized steps: the speeds and
+        /// durations are measured between calls. <see cref="SelfAvatarPipeline"/> passes its own clock, which does that
+        /// whatever the frames' times do.
         /// </summary>
         public bool Apply(double time, ReadOnlySpan<DeviceSample> accepted, SkeletonPose lastSolved, Span<DeviceSample> effective)
         {
