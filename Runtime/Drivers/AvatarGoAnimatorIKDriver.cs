@@ -75,7 +75,7 @@ namespace AvatarGo
         private Transform _hips;
         private RigidPose _bodySet;
         private bool _hasBodySet, _setUp, _failed, _warnedNoIKPass;
-        private int _framesWithoutIK, _measuredFrame = -1;
+        private int _framesWithoutIK, _measuredFrame = -1, _setFrame = -1;
 
         /// <summary>The calibrator whose pipeline drives this avatar.</summary>
         public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
@@ -95,6 +95,8 @@ namespace AvatarGo
                 return true;
             }
         }
+
+        private void OnEnable() => _framesWithoutIK = 0;
 
         private void Update()
         {
@@ -131,6 +133,7 @@ namespace AvatarGo
             _targets.Update(pose);
 
             // The hips, through the body.
+            _setFrame = Time.frameCount;
             _bodySet = _body.BodyFor(_targets.Hips);
             _hasBodySet = true;
             RigidPose body = space.ToWorld(_bodySet);
@@ -173,9 +176,12 @@ namespace AvatarGo
                 _animator.SetBoneLocalRotation((HumanBodyBones)_targets.TurnedBone(b), _targets.TurnedLocalRotation(b).ToUnity());
         }
 
-        // What the Animator made of the last pass: the hips from the body set, each bone from its goal's rotation.
+        // What the Animator made of the last pass: the hips from the body set, each bone from its goal's rotation. Only a
+        // pass of the frame before says what the bones are now: after frames without one (this driver disabled, the Animator
+        // disabled or culled) the bones are what the animation alone made of them, which would read as a wrong offset.
         private void Measure(TrackingSpace space)
         {
+            if (_setFrame != Time.frameCount - 1) return;
             if (_hasBodySet) _body.Observe(_bodySet, space.ToTracking(_hips.GetWorldPose()));
             for (int g = 0; g < 4; g++)
                 if (_hasGoalSet[g] && !_effectors.IsKnown((IkGoal)g))

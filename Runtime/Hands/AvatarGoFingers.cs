@@ -52,11 +52,17 @@ namespace AvatarGo
         /// <summary>A hand's grip mode (read by the pipeline every frame).</summary>
         public GripMode Grip(BodySide side) => side == BodySide.Left ? m_LeftGrip : m_RightGrip;
 
-        /// <summary>Sets a hand's grip mode; takes effect this frame.</summary>
+        /// <summary>
+        /// Sets a hand's grip mode, in the pipeline's settings at once: it takes effect on the pipeline's next solve (this
+        /// frame's when called before the calibrator's <c>Update</c>, <see cref="AvatarGoExecutionOrder.Calibrator"/>; the next
+        /// frame's otherwise).
+        /// </summary>
         public void SetGrip(BodySide side, GripMode grip)
         {
             if (side == BodySide.Left) m_LeftGrip = grip;
             else m_RightGrip = grip;
+            SelfAvatarPipeline pipeline = m_Calibrator != null ? m_Calibrator.Pipeline : null;
+            if (pipeline != null) pipeline.Settings.Hand(side).Grip = grip;
         }
 
         /// <summary>A hand's controller profile asset.</summary>

@@ -39,6 +39,7 @@ namespace AvatarGo
 
         private Transform _originalParent;
         private RigidPose _originalLocal = RigidPose.Identity; // the model's local pose under its own parent, before it was moved
+        private Vector3 _originalScale = Vector3.one;          // and its local scale (re-parenting keeps the world scale)
         private bool _moved, _hasOffset, _failed;
         private RigidPose _offset = RigidPose.Identity;
 
@@ -48,8 +49,23 @@ namespace AvatarGo
         /// <summary>Which hand holds this controller.</summary>
         public BodySide Hand { get => m_Hand; set => m_Hand = value; }
 
-        /// <summary>The controller model.</summary>
-        public Transform Model { get => m_Model; set => m_Model = value; }
+        /// <summary>
+        /// The controller model. Setting another one gives the current one back to its own parent first (unless its parents
+        /// are being activated or deactivated right then, when Unity refuses: it then stays under <see cref="ModelParent"/>),
+        /// and the new one's offset is measured again.
+        /// </summary>
+        public Transform Model
+        {
+            get => m_Model;
+            set
+            {
+                if (value == m_Model) return;
+                GiveBack();
+                m_Model = value;
+                _moved = false;
+                _hasOffset = false;
+            }
+        }
 
         /// <summary>Where the model is re-parented once calibrated (null: the tracking source's origin).</summary>
         public Transform ModelParent { get => m_ModelParent; set => m_ModelParent = value; }
@@ -63,16 +79,22 @@ namespace AvatarGo
             _hasOffset = false;
         }
 
-        // The model back under its own parent at its own local pose (under the controller's tracked transform, where it was:
-        // not where it was last drawn, which may be in the hand). Unity refuses to re-parent while a parent is being
-        // activated or deactivated (the rig or scene going away): then the model stays where it is, under the tracking origin.
+        // The model back under its own parent at its own local pose and scale (under the controller's tracked transform,
+        // where it was: not where it was last drawn, which may be in the hand). Unity refuses to re-parent while a parent is
+        // being activated or deactivated (the rig or scene going away): then the model stays where it is for now, still
+        // counted as moved, so that the next call gives it back and the next calibrated frame does not take where it is as
+        // its own parent. A model hidden by itself (the XR Interaction Toolkit's hideControllerModel deactivates it) is
+        // given back all the same: only its parents' activity matters.
         private void GiveBack()
         {
-            if (_moved && m_Model != null && m_Model.gameObject.activeInHierarchy && (_originalParent == null || _originalParent.gameObject.activeInHierarchy))
-            {
-                m_Model.SetParent(_originalParent, false);
-                m_Model.SetLocalPose(_originalLocal);
-            }
+            DrawnInHand = false;
+            if (!_moved) return;
+            if (m_Model == null) { _moved = false; return; }
+            Transform current = m_Model.parent;
+            if ((current != null && !current.gameObject.activeInHierarchy) || (_originalParent != null && !_originalParent.gameObject.activeInHierarchy)) return;
+            m_Model.SetParent(_originalParent, false);
+            m_Model.SetLocalPose(_originalLocal);
+            m_Model.localScale = _originalScale;
             _moved = false;
         }
 
@@ -99,6 +121,7 @@ namespace AvatarGo
             {
                 _originalParent = m_Model.parent;
                 _originalLocal = m_Model.GetLocalPose();
+                _originalScale = m_Model.localScale;
                 Transform parent = m_ModelParent != null ? m_ModelParent : m_Calibrator.Source != null ? m_Calibrator.Source.TrackingSpaceOrigin : null;
                 m_Model.SetParent(parent, true);
                 _moved = true;

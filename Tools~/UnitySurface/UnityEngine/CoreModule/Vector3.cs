@@ -13,5 +13,7 @@ namespace UnityEngine
         public float z;
 
         public Vector3(float x, float y, float z) => throw null;
+
+        public static Vector3 one => throw null;
     }
 }
