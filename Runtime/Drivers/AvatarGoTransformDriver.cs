@@ -12,6 +12,7 @@ namespace AvatarGo
     /// <remarks>
     /// Runs after the Animator (<see cref="AvatarGoExecutionOrder.TransformDriver"/>), so whatever the Animator wrote is
     /// overwritten; by default the Animator is disabled while this component is enabled, so that it does no useless work.
+    /// While the calibrator is stopped nothing is written and the Animator is enabled again.
     /// </remarks>
     [AddComponentMenu("XR/AvatarGo/Transform Driver")]
     [HelpURL(AvatarGoDocs.Manual + "transform-driver.md")]
@@ -31,7 +32,9 @@ namespace AvatarGo
         /// <summary>The calibrator whose pipeline drives this avatar.</summary>
         public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
 
-        private void OnDisable()
+        private void OnDisable() => GiveAnimatorBack();
+
+        private void GiveAnimatorBack()
         {
             if (_disabledAnimator != null) _disabledAnimator.enabled = true;
             _disabledAnimator = null;
@@ -41,6 +44,13 @@ namespace AvatarGo
         {
             if (_failed) return;
             if (!SetupErrors.FindCalibrator(this, ref m_Calibrator, ref _failed)) return;
+            if (!m_Calibrator.isActiveAndEnabled)
+            {
+                // A stopped (or failed) calibrator has put the bind positions back (its OnDisable): the last solved pose
+                // written over them every frame would freeze the avatar. The avatar is its Animator's again until it comes back.
+                GiveAnimatorBack();
+                return;
+            }
             HumanoidBinding binding = m_Calibrator.Binding;
             SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
             SkeletonPose pose = pipeline?.Pose;

@@ -95,7 +95,9 @@ namespace AvatarGo
             }
             _toldWaiting = false;
             string folder = Path.Combine(AvatarGoFiles.Folder(Application.persistentDataPath), m_Folder ?? "");
-            string path = AvatarGoFiles.NewRecordingPath(folder, m_FilePrefix, DateTime.Now, File.Exists);
+            // A name is taken by a finished recording or by one in progress (another recorder started in the same second)
+            // or interrupted (a partial file the last failure's message points to, which must not be truncated).
+            string path = AvatarGoFiles.NewRecordingPath(folder, m_FilePrefix, DateTime.Now, p => File.Exists(p) || File.Exists(p + SessionFileRecording.PartialSuffix));
             try
             {
                 _recording = new SessionFileRecording(path, header);

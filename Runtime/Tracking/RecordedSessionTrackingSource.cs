@@ -165,7 +165,9 @@ namespace AvatarGo
                 }
                 else _playback.Repeat(frame);
             }
-            catch (FormatException e)
+            // A loop reopens the file at its end: deleted, locked or unreadable by then is a data error too, not one of this
+            // frame's (which would stop the calibrator for good).
+            catch (Exception e) when (e is FormatException || e is IOException || e is UnauthorizedAccessException)
             {
                 Fail($"the session broke off: {e.Message}");
                 frame.Clear();

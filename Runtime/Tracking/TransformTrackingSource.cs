@@ -7,7 +7,9 @@ namespace AvatarGo
     /// <summary>
     /// Devices given as plain transforms (an XR Interaction Toolkit rig's camera and controllers, objects a tracking SDK
     /// moves, or test fixtures): the HMD, both controllers and three trackers. A transform left empty is a device that is
-    /// never tracked. Triggers come from script (<see cref="SetTrigger"/>) as the transforms carry no input.
+    /// never tracked, and so is one whose GameObject is inactive (the XR Interaction Toolkit's input modality manager
+    /// deactivates a controller until it is tracked). Triggers come from script (<see cref="SetTrigger"/>) as the
+    /// transforms carry no input.
     /// </summary>
     [AddComponentMenu("XR/AvatarGo/Transform Tracking Source")]
     [HelpURL(AvatarGoDocs.Manual + "tracking-sources.md#transform-tracking-source")]
@@ -67,7 +69,9 @@ namespace AvatarGo
             for (int d = 0; d < header.Devices.Count; d++)
             {
                 Transform device = DeviceTransform(d);
-                frame.Samples[d] = device == null ? DeviceSample.Lost : new DeviceSample(ToTrackingSpace(device), true);
+                // An inactive transform is not tracked: the XR Interaction Toolkit's input modality manager keeps a
+                // controller's GameObject inactive until it is tracked, and while hands are tracked instead.
+                frame.Samples[d] = device == null || !device.gameObject.activeInHierarchy ? DeviceSample.Lost : new DeviceSample(ToTrackingSpace(device), true);
             }
             for (int s = 0; s < 2; s++)
             {

@@ -34,7 +34,7 @@ namespace AvatarGo.Core
 
         /// <summary>The text for the wearer now; empty when nothing should be shown.</summary>
         public string Message => _state != CalibrationState.Calibrated ? _stepMessage
-            : _now - _confirmedAt < ConfirmationSeconds ? _confirmation : string.Empty;
+            : double.IsNaN(_confirmedAt) || _now - _confirmedAt < ConfirmationSeconds ? _confirmation : string.Empty;
 
         /// <summary>True while there is a <see cref="Message"/> to show.</summary>
         public bool ShowsMessage => Message.Length > 0;
@@ -52,6 +52,7 @@ namespace AvatarGo.Core
         public CalibrationFlowEvents Update(double time, CalibrationStep step, CalibrationState state)
         {
             _now = time;
+            if (double.IsNaN(_confirmedAt)) _confirmedAt = time; // a restore's confirmation counts from the first frame after it
             _state = state;
             _stepMessage = step.Message ?? string.Empty;
             switch (step.Outcome)
@@ -70,12 +71,17 @@ namespace AvatarGo.Core
             }
         }
 
-        /// <summary>A saved profile was restored at <paramref name="time"/>: calibrated, with the restore's confirmation.</summary>
+        /// <summary>
+        /// A saved profile was restored at <paramref name="time"/>: calibrated, with the restore's confirmation, whose
+        /// <see cref="ConfirmationSeconds"/> count from the next <see cref="Update"/>'s time. A restore comes between frames
+        /// (at start, before the source's first frame; when the devices changed), from a time the next frame's clock need not
+        /// continue: counted from it, the confirmation of a restore at 0 was never shown once the source's clock was past 4 s.
+        /// </summary>
         public CalibrationFlowEvents Restored(double time)
         {
             _now = time;
             _state = CalibrationState.Calibrated;
-            Confirm(time, RestoredMessage);
+            Confirm(double.NaN, RestoredMessage);
             return CalibrationFlowEvents.Restored;
         }
 

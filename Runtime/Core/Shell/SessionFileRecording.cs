@@ -79,7 +79,8 @@ namespace AvatarGo.Core
         /// Ends the session: writes its end line, flushes it to disk and moves it onto <see cref="Path"/> atomically.
         /// Does nothing when already closed.
         /// </summary>
-        /// <exception cref="IOException">The file could not be written or moved (the partial file is left in place).</exception>
+        /// <exception cref="IOException">The file could not be written or moved, now or at an earlier frame (a full disk); the
+        /// partial file is left in place with the frames written before the failure.</exception>
         public void Complete()
         {
             if (!IsOpen) return;
@@ -90,9 +91,16 @@ namespace AvatarGo.Core
                 _text.Flush();
                 _stream.Flush(true);
             }
+            catch (InvalidOperationException e)
+            {
+                // The writer refuses to end a session one of whose frames failed to be written (a torn line may be in it):
+                // to the caller that is the same failure to write the file.
+                throw new IOException($"Writing the recording failed at an earlier frame; the frames before it are in {PartialPath}.", e);
+            }
             finally
             {
-                _stream.Dispose();
+                // Disposing flushes what is buffered: on a full disk that throws again, over the error above.
+                try { _stream.Dispose(); } catch (IOException) { }
             }
             if (File.Exists(Path)) File.Replace(PartialPath, Path, null);
             else File.Move(PartialPath, Path);

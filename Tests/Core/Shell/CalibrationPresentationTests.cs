@@ -120,6 +120,26 @@ namespace AvatarGo.Core.Tests
             Assert.That(flow.ShowsMarkers, Is.True);
         }
 
+        /// <summary>
+        /// A saved calibration restored between frames, at a time the source's clock does not continue (0, before the first
+        /// frame of a source whose clock is the time since launch, 100 s): the confirmation is shown for its 4 s from the
+        /// first frame after the restore (found in review: counted from 0, it was never shown).
+        /// </summary>
+        [Test]
+        public void ARestoresConfirmationCountsFromTheNextFrame()
+        {
+            var flow = new CalibrationFlow();
+            var waiting = new CalibrationStep(CalibrationState.Calibrated, CalibrationStepOutcome.Waiting, CalibrationError.None, "", null);
+            flow.Restored(0.0);
+            Assert.That(flow.Message, Is.EqualTo(CalibrationFlow.RestoredMessage), "shown at once");
+            flow.Update(100.0, waiting, CalibrationState.Calibrated);
+            Assert.That(flow.Message, Is.EqualTo(CalibrationFlow.RestoredMessage), "on the first frame");
+            flow.Update(103.9, waiting, CalibrationState.Calibrated);
+            Assert.That(flow.Message, Is.EqualTo(CalibrationFlow.RestoredMessage), "3.9 s later");
+            flow.Update(104.1, waiting, CalibrationState.Calibrated);
+            Assert.That(flow.Message, Is.Empty, "gone after its 4 s");
+        }
+
         [Test]
         public void MessagesAreBrokenIntoLinesAtSpaces()
         {
