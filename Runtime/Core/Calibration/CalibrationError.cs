@@ -44,5 +44,12 @@ namespace AvatarGo.Core
 
         /// <summary>At the walk-in, the HMD is not where the avatar's eyes are: the wearer has not walked into the avatar.</summary>
         NotInsideAvatar,
+
+        /// <summary>
+        /// The avatar's size against the wearer's is beyond what a profile holds (<see cref="CalibrationProfileStore.MinAvatarScale"/>
+        /// … <see cref="CalibrationProfileStore.MaxAvatarScale"/>): its units are not a person's (an avatar modelled in
+        /// micrometres), or its eye height is wrong.
+        /// </summary>
+        AvatarScaleOutOfRange,
     }
 }

@@ -33,6 +33,7 @@ namespace AvatarGo.Core
                 case CalibrationError.RuntimeRoleMismatch: return "A tracker's assigned role does not match where it is worn: check the tracker roles in your VR runtime.";
                 case CalibrationError.WrongState: return "Start again from the T-pose.";
                 case CalibrationError.NotInsideAvatar: return "Walk into the avatar until your eyes are where its eyes are, then press the trigger again.";
+                case CalibrationError.AvatarScaleOutOfRange: return "This avatar cannot be scaled to you: its size is not a person's in any unit. Check the avatar's import scale.";
                 default: return error.ToString();
             }
         }

@@ -29,11 +29,12 @@ namespace AvatarGo.Core
         /// </summary>
         public const int MaxFileLength = 64 << 10;
 
-        /// <summary>The smallest avatar scale a profile may hold (an avatar modelled in millimetres is 0.001).</summary>
-        public const float MinAvatarScale = 1e-3f;
+        /// <summary>The smallest avatar scale a profile may hold: 1e-4 (an avatar modelled in millimetres is about 0.001, a
+        /// wearer a third shorter than it 0.0007).</summary>
+        public const float MinAvatarScale = 1e-4f;
 
         /// <summary>The largest avatar scale a profile may hold.</summary>
-        public const float MaxAvatarScale = 1e3f;
+        public const float MaxAvatarScale = 1e4f;
 
         /// <summary>The largest eye height (wearer's or unscaled avatar's) a profile may hold, in metres or the avatar's units.</summary>
         public const float MaxHeight = 1e4f;

@@ -31,6 +31,7 @@ namespace AvatarGo.Core
         private readonly Dictionary<int, int> _indexById = new Dictionary<int, int>();
         private readonly PerRole<int> _deviceByRole = new PerRole<int>(-1);
         private double _lastAdvance = double.NegativeInfinity;
+        private readonly SteadyClock _clock = new SteadyClock();
         private BodyFeatures _tposeFeatures;
 
         /// <summary>Creates a calibrator for these devices (in the order samples will come) and this avatar.</summary>
@@ -119,6 +120,9 @@ namespace AvatarGo.Core
         /// <exception cref="ArgumentException">Not one sample per device.</exception>
         public CalibrationStep Update(double time, ReadOnlySpan<DeviceSample> samples, IReadOnlyList<DeviceEvent> events)
         {
+            // The averaging windows and the spacing of presses run on a steady clock: a time that is not finite, or a clock
+            // that restarts, would otherwise let a second press skip the walk-in or ignore every press until it came back.
+            time = _clock.Advance(time);
             _window.Add(time, samples);
             CalibrationStep result = default;
             bool acted = false;
@@ -202,6 +206,12 @@ namespace AvatarGo.Core
                 scale = fit.Scale;
             }
             explanation.Append(explanation.Length > 0 ? "; " : "").Append(fit.Explanation);
+            // What a profile cannot hold is refused here, not when the profile is saved (an avatar 10 % taller than the
+            // wearer, modelled in millimetres, is 0.00095).
+            if (!(scale >= CalibrationProfileStore.MinAvatarScale && scale <= CalibrationProfileStore.MaxAvatarScale))
+                return Refuse(CalibrationError.AvatarScaleOutOfRange,
+                    FormattableString.Invariant($"the avatar would be scaled by {scale:G3}, outside {CalibrationProfileStore.MinAvatarScale:G3}–{CalibrationProfileStore.MaxAvatarScale:G3} (its eye height {avatarEye:G4} in its units)"),
+                    explanation.ToString());
             RigidPose placement = _validator.Placement(_deviceByRole, _averages, chosen.Floor, forward);
             ShowAvatar(scale, placement, proportions);
             Profile = new CalibrationProfile
@@ -300,6 +310,9 @@ namespace AvatarGo.Core
             Profile.Proportions = proportions;
             foreach (DeviceRole role in BodyRoles.All)
                 Profile.SetOffsets(role, Profile.DeviceAtCalibration(role), AvatarPose.World[ScaledAvatar[BodyRoles.JointOf(role)]]);
+            // The offsets just set are exact: a profile of the fixed-offset baseline gets its fixed ones back, as
+            // WithRemeasuredDevice does (it ran on exact offsets and saved as fixed; found in review).
+            if (Profile.Mode == OffsetMode.Fixed) Profile = Profile.WithFixedOffsets();
         }
 
         // A refused walk-in step keeps the roles: the wearer only has to hold still and press again.

@@ -45,10 +45,8 @@ namespace AvatarGo.Core
         private readonly PerRole<int> _roles = new PerRole<int>(-1);
         private float _armLength;
         private SwapEvidence _evidence;
-        private double _lastTime = double.NaN;
-        private double _trackingClock = double.NaN;      // the tracking stages' time: advances by each frame's step (Solve)
-        private const double MaxFrameSeconds = 0.25;      // the longest step between two frames taken as it is
-        private double _regularStep = 1.0 / 90.0;         // the last step under MaxFrameSeconds (what a longer one counts)
+        private readonly SteadyClock _clock = new SteadyClock(); // the tracking stages' time, once calibrated (Solve)
+        private double _trackingClock = double.NaN;              // _clock.Now
         private FullBodyIk _ik;
         private SkeletonPose _pose, _lastGood;
         private BodyTargets _targets;
@@ -362,8 +360,12 @@ namespace AvatarGo.Core
             _mapper = new BodyTargetMapper(active, _devices, scaled, calibrationPose, Settings.KneeHints, Settings.ElbowHints);
             var reach = new float[_devices.Length];
             for (int d = 0; d < reach.Length; d++) reach[d] = -1f; // devices no role uses are not checked
-            Vector3 head0 = active.DeviceAtCalibration(DeviceRole.Head).Position;
-            foreach (DeviceRole role in BodyRoles.All) reach[_roles[role]] = Vector3.Distance(active.DeviceAtCalibration(role).Position, head0);
+            // The body's reach, as the walk-in measured it: a device re-measured elsewhere later (RecalibrateDevice) keeps
+            // the walk-in's distances; measured from a headset re-measured a metre away, good samples of the others were
+            // rejected (found in review).
+            CalibrationProfile walkIn = _calibrator.Profile ?? active;
+            Vector3 head0 = walkIn.DeviceAtCalibration(DeviceRole.Head).Position;
+            foreach (DeviceRole role in BodyRoles.All) reach[_roles[role]] = Vector3.Distance(walkIn.DeviceAtCalibration(role).Position, head0);
             _sanitizer = new SampleSanitizer(_devices.Length, _roles[DeviceRole.Head], reach, Settings.Tracking);
             _continuity = new TrackingContinuity(active, _roles, scaled, calibrationPose, Settings.Tracking);
             if (blendFromCurrentPose) _continuity.StartFrom(_pose, scaled);
@@ -403,19 +405,10 @@ namespace AvatarGo.Core
 
         private void Solve(double time, ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip)
         {
-            // The tracking stages measure the time between frames on their own clock, which advances by each frame's
-            // step. A step longer than MaxFrameSeconds either way (a recording's clock that jumps ahead, restarts, or
-            // gives one frame a time from long before; finite, so not caught above) counts as the last regular step:
-            // taken on, it would hold a part lost on that frame until the clock came back, ease it in one frame, or open
-            // the glitch filter by the jump's length (20 m/s for seconds is metres). A repeated time, or one a little
-            // earlier, is a frame in which no time passed. While the time runs forward in regular steps the clock is
-            // the frame's time.
-            double raw = double.IsNaN(_lastTime) ? 0.0 : time - _lastTime;
-            double step = Math.Abs(raw) > MaxFrameSeconds ? _regularStep : Math.Max(raw, 0.0);
-            if (raw > 0.0 && raw <= MaxFrameSeconds) _regularStep = raw;
-            float dt = (float)step;
-            _lastTime = time;
-            _trackingClock = double.IsNaN(_trackingClock) ? time : _trackingClock + step;
+            // The tracking stages measure the time between frames on their own clock (SteadyClock: a recording's clock
+            // that jumps neither holds a lost part for good, nor eases it in one frame, nor opens the glitch filter).
+            _trackingClock = _clock.Advance(time);
+            float dt = (float)_clock.LastStep;
             _window.Add(_trackingClock, samples);
             // Bad samples out, lost devices' parts held and eased, returning ones blended back; without the HMD, freeze.
             _sanitizer.Filter(_trackingClock, samples, _accepted);

@@ -51,8 +51,8 @@ namespace AvatarGo.Core.Tests
         [TestCase("1e-50")]
         [TestCase("0")]
         [TestCase("-1")]
-        [TestCase("2000")]
-        [TestCase("0.0009")]
+        [TestCase("20000")]
+        [TestCase("0.00009")]
         public void AnAbsurdAvatarScaleIsRefusedAtItsLine(string scale)
         {
             AssertRefused(WithNumber("avatarScale", scale), "avatarScale", "'avatarScale' is");

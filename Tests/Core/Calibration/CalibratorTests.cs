@@ -61,6 +61,39 @@ namespace AvatarGo.Core.Tests
         }
 
         /// <summary>
+        /// An avatar modelled in millimetres and 10 % taller than the wearer (scale 0.00091) calibrates, and its profile is
+        /// saved and loads back with its scale (found in review: it calibrated, then saving threw, the store's smallest scale
+        /// being 0.001); one modelled in micrometres (scale 9e-7) is refused at the T-pose with the scale named, never
+        /// calibrated into a profile that cannot be saved.
+        /// </summary>
+        [TestCase(1100f, CalibrationState.Calibrated)]
+        [TestCase(1.1e6f, CalibrationState.WaitingForTPose)]
+        public void AnAvatarInOtherUnitsCalibratesOnlyWhereItsProfileCanBeSaved(float unitsPerMetreTaller, CalibrationState expected)
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 210);
+            HumanoidMap avatar = HumanoidNaming.Detect(wearer.Map.Skeleton.Scaled(unitsPerMetreTaller));
+            var calibrator = new Calibrator(wearer.Devices, avatar);
+            wearer.StandInTPose(RigidPose.Identity);
+            double t = 0;
+            wearer.HoldAndPress(calibrator, ref t, 0.002f, 0.2f);
+            if (expected == CalibrationState.WaitingForTPose)
+            {
+                Assert.That(calibrator.State, Is.EqualTo(CalibrationState.WaitingForTPose));
+                Assert.That(calibrator.LastStep.Error, Is.EqualTo(CalibrationError.AvatarScaleOutOfRange));
+                Assert.That(calibrator.LastStep.Message, Does.Contain("scaled by"));
+                return;
+            }
+            Assume.That(calibrator.State, Is.EqualTo(CalibrationState.WalkIn), calibrator.LastStep.Message);
+            wearer.StandInTPose(calibrator.Profile.Placement);
+            wearer.HoldAndPress(calibrator, ref t, 0.002f, 0.2f);
+            Assert.That(calibrator.State, Is.EqualTo(expected), calibrator.LastStep.Message);
+            float scale = calibrator.Profile.AvatarScale;
+            Assert.That(scale, Is.EqualTo(1f / unitsPerMetreTaller).Within(0.1f / unitsPerMetreTaller), "about a thousandth, a tenth smaller");
+            CalibrationProfile loaded = CalibrationProfileStore.FromJson(CalibrationProfileStore.ToJson(calibrator.Profile));
+            Assert.That(loaded.AvatarScale, Is.EqualTo(scale).Within(scale * 1e-5f));
+        }
+
+        /// <summary>
         /// The walk-in is refused while the wearer stands beside the avatar, not in it (found in review: the offsets took in
         /// however far away the wearer stood, a metre if need be): 0.5 m to the side is refused with the distance named, and
         /// the calibration then completes once the wearer steps in (0.1 m off, as a wearer lines up by eye).

@@ -17,7 +17,7 @@ namespace AvatarGo.Core.Tests
 
         // Stands the mocapbank wearer in T-pose and feeds frames at 90 Hz; `events(frame)` gives each frame's events.
         private static Calibrator Run(Func<int, IReadOnlyList<DeviceEvent>> events, int frames, CalibrationSettings settings = null,
-            Func<Wearer, IReadOnlyList<DeviceInfo>> devices = null, Action<DeviceSample[]> samples = null)
+            Func<Wearer, IReadOnlyList<DeviceInfo>> devices = null, Action<DeviceSample[]> samples = null, Func<int, double> time = null)
         {
             var wearer = new Wearer("mocapbank_30fps.bvh", 11, DeviceMountings.Default());
             wearer.StandInTPose(RigidPose.Identity);
@@ -30,7 +30,7 @@ namespace AvatarGo.Core.Tests
                 wearer.Sample(truth, 0.001f, 0.1f);
                 samples?.Invoke(truth);
                 for (int d = 0; d < fed.Length; d++) fed[d] = truth[Array.IndexOf(wearer.Devices, list[d])];
-                calibrator.Update(i / 90.0, fed, events(i));
+                calibrator.Update(time != null ? time(i) : i / 90.0, fed, events(i));
             }
             return calibrator;
         }
@@ -61,6 +61,37 @@ namespace AvatarGo.Core.Tests
         {
             // The control: the same wearer pressing again once the window has passed is calibrated.
             Calibrator c = Run(i => i == 89 || i == 180 ? new[] { Press(2) } : None, 200);
+            Assert.That(c.State, Is.EqualTo(CalibrationState.Calibrated), c.LastStep.ToString());
+        }
+
+        /// <summary>
+        /// Frames without a time (NaN) are frames in which no time passed, for the calibrator too: the other trigger a frame
+        /// after the T-pose's press does not skip the walk-in (found in review: NaN made the half-second rule and the
+        /// averaging window never apply, and the calibrator ended calibrated without a walk-in); a clock that never gives a
+        /// time measures nothing and calibrates nothing.
+        /// </summary>
+        [Test]
+        public void FramesWithoutATimeDoNotLetASecondPressSkipTheWalkIn()
+        {
+            Calibrator c = Run(i => i == 89 ? new[] { Press(1) } : i == 90 ? new[] { Press(2) } : None, 120, time: i => i < 80 ? i / 90.0 : double.NaN);
+            Assert.That(c.State, Is.EqualTo(CalibrationState.WalkIn), c.LastStep.ToString());
+            Assert.That(c.LastStep.Explanation, Does.Contain("after the previous step"));
+
+            // With no time at all nothing is measured over the half second: the T-pose's press asks the wearer to hold still.
+            Calibrator never = Run(i => i == 89 ? new[] { Press(1) } : i == 90 ? new[] { Press(2) } : None, 120, time: i => double.NaN);
+            Assert.That(never.State, Is.EqualTo(CalibrationState.WaitingForTPose), never.LastStep.ToString());
+            Assert.That(never.LastStep.Error, Is.EqualTo(CalibrationError.DevicesMoving));
+        }
+
+        /// <summary>
+        /// A clock that restarts after the T-pose's press (a replay started again, a runtime that reset its clock) does not
+        /// ignore the walk-in's press (found in review: "came -981.00 s after the previous step" until the clock passed its
+        /// old time).
+        /// </summary>
+        [Test]
+        public void AClockThatRestartsDoesNotIgnoreTheNextPress()
+        {
+            Calibrator c = Run(i => i == 89 || i == 300 ? new[] { Press(2) } : None, 320, time: i => i < 100 ? 1000.0 + i / 90.0 : (i - 100) / 90.0);
             Assert.That(c.State, Is.EqualTo(CalibrationState.Calibrated), c.LastStep.ToString());
         }
 

@@ -141,6 +141,26 @@ namespace AvatarGo.Core.Tests
         }
 
         /// <summary>
+        /// Re-measuring the headset where the wearer now stands, 0.8 m to the side of the walk-in, leaves the other devices'
+        /// reach as the walk-in measured it (found in review: it was measured again from the re-measured headset to where
+        /// each device was at the walk-in, so the controllers' limit shrank and their good samples were rejected, the hands
+        /// held as lost).
+        /// </summary>
+        [Test]
+        public void ReMeasuringTheHeadsetElsewhereKeepsTheOthersReach()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 66);
+            double t = 0;
+            SelfAvatarPipeline pipeline = Calibrated(wearer, ref t);
+            wearer.StandInTPose(new RigidPose(new Vector3(-0.8f, 0f, 0f), Quaternion.Identity));
+            (float before, _) = Stand(wearer, pipeline, ref t, 1.5, null);
+            Assert.That(pipeline.RecalibrateDevice(DeviceRole.Head, out string reason), Is.True, reason);
+            (float wrist, _) = Stand(wearer, pipeline, ref t, 1.5, null);
+            Assert.That(pipeline.Hand(BodySide.Left).ControllerTracked && pipeline.Hand(BodySide.Right).ControllerTracked, Is.True, "both controllers accepted");
+            Assert.That(wrist, Is.LessThan(before + 0.002f), $"the wrists follow the wearer's as before the re-measure ({before * 1000:0.0} mm; m)");
+        }
+
+        /// <summary>
         /// With the paper's fixed offsets switched on, re-measuring a device still writes the measured offset into the profile
         /// (found in review: it placed the joint by the pelvis's fixed offset, so the saved profile was off by the pelvis's
         /// measured offset, about 10 cm). The same slip re-measured in both modes gives the same profile.

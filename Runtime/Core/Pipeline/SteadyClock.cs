@@ -1,0 +1,45 @@
+using System;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// The time that measurements between frames run on (speeds, holds and eases, averaging windows, the spacing of presses):
+    /// it follows the frames' times while they run forward in regular steps, and counts a step longer than
+    /// <see cref="MaxStepSeconds"/> either way (a clock that jumps ahead or restarts, one frame stamped with a time from long
+    /// before) as the last regular step, and a repeated, slightly earlier or non-finite time as none. A recording's clock
+    /// that jumps would otherwise hold a lost part until it came back, ease it in one frame, open the glitch filter by the
+    /// jump's length, or ignore presses for as long as it had gone back.
+    /// </summary>
+    internal sealed class SteadyClock
+    {
+        /// <summary>The longest step between two frames taken as it is (a hitch, a paused replay): 0.25 s.</summary>
+        public const double MaxStepSeconds = 0.25;
+
+        private double _lastTime = double.NaN;
+        private double _regularStep = 1.0 / 90.0;
+
+        /// <summary>The clock after the last <see cref="Advance"/> (NaN before the first).</summary>
+        public double Now { get; private set; } = double.NaN;
+
+        /// <summary>How far the last <see cref="Advance"/> moved it (s).</summary>
+        public double LastStep { get; private set; }
+
+        /// <summary>Moves the clock to the frame at <paramref name="time"/> (the frame's own time) and returns it.</summary>
+        public double Advance(double time)
+        {
+            if (double.IsNaN(time) || double.IsInfinity(time))
+            {
+                LastStep = 0.0;
+                if (double.IsNaN(Now)) Now = 0.0;
+                return Now;
+            }
+            double raw = double.IsNaN(_lastTime) ? 0.0 : time - _lastTime;
+            double step = Math.Abs(raw) > MaxStepSeconds ? _regularStep : Math.Max(raw, 0.0);
+            if (raw > 0.0 && raw <= MaxStepSeconds) _regularStep = raw;
+            _lastTime = time;
+            Now = double.IsNaN(Now) ? time : Now + step;
+            LastStep = step;
+            return Now;
+        }
+    }
+}
