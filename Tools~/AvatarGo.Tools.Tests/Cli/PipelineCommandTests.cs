@@ -32,6 +32,7 @@ public class PipelineCommandTests
         Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
         using var doc = JsonDocument.Parse(r.Stdout);
         Assert.That(doc.RootElement.GetProperty("frames").GetInt32(), Is.EqualTo(200));
+        Assert.That(doc.RootElement.GetProperty("frames_per_pass").GetInt32(), Is.EqualTo(398), "played forward and back: 200 + 198");
         Assert.That(doc.RootElement.GetProperty("cases").GetArrayLength(), Is.EqualTo(4), "no finger case for an avatar without finger bones");
         foreach (var c in doc.RootElement.GetProperty("cases").EnumerateArray())
             Assert.That(c.GetProperty("bytes_per_frame").GetDouble(), Is.EqualTo(0.0), c.GetProperty("name").GetString());
