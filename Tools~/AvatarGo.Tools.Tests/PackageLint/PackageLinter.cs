@@ -145,6 +145,19 @@ public sealed class PackageLinter
             for (string d = ParentOf(f); d.Length > 0; d = ParentOf(d))
                 folders.Add(d);
 
+        // A file or folder at the root that is no package entry, `~` folder or dot entry is imported by Unity all the same
+        // (two scratch JSON files once landed there, unseen: this check skipped everything outside the package entries).
+        var strays = new SortedSet<string>(StringComparer.Ordinal);
+        foreach (string f in Files)
+        {
+            string top = f.Split('/')[0];
+            string entry = top.EndsWith(".meta", StringComparison.Ordinal) ? top.Substring(0, top.Length - ".meta".Length) : top;
+            if (top.StartsWith(".", StringComparison.Ordinal) || top.EndsWith("~", StringComparison.Ordinal) || RootAssets.Contains(entry)) continue;
+            strays.Add(top);
+        }
+        foreach (string stray in strays)
+            problems.Add($"{stray}: at the package root but no package entry: Unity imports it; move it under a ~ folder or delete it");
+
         var assets = files.Where(f => !f.EndsWith(".meta", StringComparison.Ordinal))
             .Concat(folders).Where(IsImported).OrderBy(p => p, StringComparer.Ordinal);
         foreach (string asset in assets)

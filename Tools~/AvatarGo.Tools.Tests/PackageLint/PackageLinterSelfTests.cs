@@ -50,6 +50,14 @@ public class PackageLinterSelfTests
     }
 
     [Test]
+    public void AStrayFileAtTheRootIsReported()
+    {
+        _pkg.Write("f_main.json", "{}");
+        _pkg.Write("Scratch/notes.txt", "x");
+        AssertReported(_pkg.Linter.CheckMetas(), "f_main.json: at the package root but no package entry", "Scratch: at the package root but no package entry");
+    }
+
+    [Test]
     public void OrphanMetaIsReported()
     {
         _pkg.Write("Runtime/Gone.cs.meta", FakePackage.Meta("Runtime/Gone.cs", folder: false));
