@@ -15,6 +15,15 @@ namespace AvatarGo.Core
     {
         // A frame is due when its time is within a tenth of a microsecond of the clock (summed frame times drift).
         private const double ClockTolerance = 1e-7;
+
+        /// <summary>
+        /// The longest step one <see cref="Advance"/> plays (1 s): a longer one (a hitch, a game resumed after a pause, a
+        /// huge speed) plays that second, not the whole time, so that one call never delivers a flood of frames' events
+        /// nor reopens a looping session over and over.
+        /// </summary>
+        public const double MaxStepSeconds = 1.0;
+
+        private FormatException _lookAheadError; // the frame after the current one could not be read: thrown once the current is delivered
         private readonly Func<SessionReader> _open;
         private readonly List<DeviceEvent> _pending = new List<DeviceEvent>(16);
         private SessionReader _reader;
@@ -32,11 +41,20 @@ namespace AvatarGo.Core
             _open = open ?? throw new ArgumentNullException(nameof(open));
             Loop = loop;
             _reader = open() ?? throw new ArgumentException("The session factory returned null.", nameof(open));
-            Header = _reader.Header;
-            _current = _reader.CreateFrame();
-            _next = _reader.CreateFrame();
-            _hasNext = _reader.ReadFrame(_next);
-            if (!_hasNext) throw new FormatException("The session has no frames.");
+            try
+            {
+                Header = _reader.Header;
+                _current = _reader.CreateFrame();
+                _next = _reader.CreateFrame();
+                _hasNext = _reader.ReadFrame(_next);
+                if (!_hasNext) throw new FormatException("The session has no frames.");
+            }
+            catch
+            {
+                _reader.Dispose(); // its file is not left open
+                _reader = null;
+                throw;
+            }
             _clock = _next.Time;
         }
 
@@ -55,21 +73,26 @@ namespace AvatarGo.Core
         /// <summary>
         /// Moves the playback clock by <paramref name="deltaSeconds"/> (0 or more) and fills <paramref name="output"/> with the
         /// newest recorded frame at or before it, with the events of every recorded frame passed since the last call; the
-        /// first call delivers the first frame. Allocation-free (but a loop reopens the session).
+        /// first call delivers the first frame (its delta moves nothing). A step is at most <see cref="MaxStepSeconds"/>; while
+        /// the last frame is held (not looping) the clock waits on it, so that looping switched on later goes on from there.
+        /// Allocation-free (but a loop reopens the session).
         /// </summary>
-        /// <exception cref="FormatException">The session is malformed or truncated at the frames reached.</exception>
+        /// <exception cref="FormatException">The session is malformed or truncated at the frames reached (thrown on the call
+        /// after the one that delivered the last frame that could be read).</exception>
         public void Advance(double deltaSeconds, SessionFrame output)
         {
             CheckOutput(output);
-            if (deltaSeconds > 0 && !double.IsInfinity(deltaSeconds)) _clock += deltaSeconds;
+            ThrowPendingError();
+            if (_hasCurrent && deltaSeconds > 0 && !double.IsInfinity(deltaSeconds)) _clock += Math.Min(deltaSeconds, MaxStepSeconds);
             _pending.Clear();
             if (!_hasCurrent) TakeNext();
             while (true)
             {
-                if (!_hasNext && !Rewind()) break;
+                if (!_hasNext && (_lookAheadError != null || !Rewind())) break;
                 if (_next.Time + _nextOffset > _clock + ClockTolerance) break;
                 TakeNext();
             }
+            if (!_hasNext && !Loop) _clock = Math.Min(_clock, _currentTime); // held: the clock waits on the last frame
             if (!_currentDelivered) for (int e = 0; e < _current.Events.Count; e++) _pending.Add(_current.Events[e]);
             Deliver(output);
         }
@@ -82,8 +105,9 @@ namespace AvatarGo.Core
         public bool Step(SessionFrame output)
         {
             CheckOutput(output);
+            ThrowPendingError();
             _pending.Clear();
-            bool stepped = (_hasNext || Rewind()) && TakeNext();
+            bool stepped = (_hasNext || (_lookAheadError == null && Rewind())) && TakeNext();
             if (stepped) for (int e = 0; e < _current.Events.Count; e++) _pending.Add(_current.Events[e]);
             if (_hasCurrent) _clock = _currentTime;
             Deliver(output);
@@ -125,9 +149,27 @@ namespace AvatarGo.Core
             _currentDelivered = false;
             _currentTime = _current.Time + _nextOffset;
             FramesPlayed++;
-            _hasNext = _reader != null && _reader.ReadFrame(_next);
+            try
+            {
+                _hasNext = _reader != null && _reader.ReadFrame(_next);
+            }
+            catch (FormatException e)
+            {
+                // A truncated file (a crash-recovered recording): the frame just taken is still delivered; the error comes
+                // with the call after.
+                _hasNext = false;
+                _lookAheadError = e;
+            }
             // The events of frames skipped on the way are kept: only the last one's samples are delivered.
             return true;
+        }
+
+        private void ThrowPendingError()
+        {
+            if (_lookAheadError == null || !_currentDelivered) return;
+            FormatException e = _lookAheadError;
+            _lookAheadError = null;
+            throw e;
         }
 
         // At the end: reopen the session when looping, its times shifted past the last frame's by one nominal frame.

@@ -125,10 +125,51 @@ namespace AvatarGo.Core.Tests
             string truncated = tiny.Substring(0, tiny.IndexOf("frame 0.5", StringComparison.Ordinal));
             using SessionPlayback playback = Play(truncated);
             var output = new SessionFrame(playback.Header);
-            for (int i = 0; i < 4; i++) Assert.That(playback.Step(output), Is.True);
+            // Every complete frame is delivered, the last one before the cut included (found in review: frame 0.4 was read
+            // as the lookahead that failed, and lost); the call after it reports the truncation.
+            for (int i = 0; i < 5; i++) Assert.That(playback.Step(output), Is.True, $"frame {i}");
+            Assert.That(output.Time, Is.EqualTo(0.4).Within(1e-9), "the last complete frame");
             var e = Assert.Throws<FormatException>(() => playback.Step(output));
             Assert.That(e.Message, Does.Contain("truncated"));
             Assert.Throws<FormatException>(() => new SessionPlayback(() => Sessions.Read("avatargo-session 1.0\n"), false));
+        }
+
+        /// <summary>
+        /// Found in review: the clock ran on while the last frame was held, so looping switched on 100 s later played 991
+        /// frames and 99 presses in one call; and one huge step (a hitch, a huge speed) reopened a looping session 100
+        /// times in a call. Now the held clock waits on the last frame, and a step plays at most a second.
+        /// </summary>
+        [Test]
+        public void NeitherAHeldEndNorAHugeStepDeliversAFloodOfFrames()
+        {
+            using SessionPlayback held = Play(Tiny());
+            var output = new SessionFrame(held.Header);
+            held.Advance(0, output);
+            for (int i = 0; i < 6000; i++) held.Advance(1.0 / 60, output); // 100 s on the last frame
+            Assert.That(held.Finished, Is.True);
+            int before = held.FramesPlayed;
+            held.Loop = true;
+            held.Advance(1.0 / 60, output);
+            Assert.That(held.FramesPlayed - before, Is.LessThanOrEqualTo(1), "looping goes on from the last frame");
+            Assert.That(output.Events.Count, Is.EqualTo(0));
+
+            using SessionPlayback looping = Play(Tiny(), loop: true);
+            looping.Advance(0, output);
+            looping.Advance(1000, output);
+            Assert.That(looping.FramesPlayed, Is.LessThanOrEqualTo(12), "a 1000 s step plays a second's frames (10 Hz)");
+            Assert.That(output.Events.Count, Is.LessThanOrEqualTo(2), "one press and one release at most");
+        }
+
+        /// <summary>The first <see cref="SessionPlayback.Advance"/> delivers the first frame, whatever its delta (as documented).</summary>
+        [Test]
+        public void TheFirstAdvanceDeliversTheFirstFrame()
+        {
+            using SessionPlayback playback = Play(Tiny());
+            var output = new SessionFrame(playback.Header);
+            playback.Advance(0.5, output);
+            Assert.That(output.Time, Is.EqualTo(0.0).Within(1e-9));
+            playback.Advance(0.5, output);
+            Assert.That(output.Time, Is.EqualTo(0.5).Within(1e-6));
         }
 
         [Test]
