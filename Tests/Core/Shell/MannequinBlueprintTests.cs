@@ -120,6 +120,37 @@ namespace AvatarGo.Core.Tests
             }
         }
 
+        /// <summary>
+        /// A twist joint halfway along each upper arm, forearm, thigh and shin (every other joint's world pose kept) draws
+        /// each limb as two capsules as thick as the one without it (found in review: a fifth of each half's length, so
+        /// the upper arm was 25.6 mm thick instead of 51.2 mm).
+        /// </summary>
+        [Test]
+        public void TwistJointsDoNotThinTheLimbs()
+        {
+            BvhClip clip = Load("mocapbank_30fps.bvh");
+            HumanoidMap plainMap = HumanoidNaming.Detect(clip.Skeleton);
+            BvhClip twisted = Topology.WithTwistJoints(clip);
+            HumanoidMap twistedMap = HumanoidNaming.Detect(twisted.Skeleton);
+            MannequinBlueprint plain = MannequinBlueprint.Create(plainMap), withTwists = MannequinBlueprint.Create(twistedMap);
+            foreach (var (bone, next, twist) in Topology.TwistedBones)
+            {
+                float expected = RadiusFrom(plain, plainMap.Skeleton.GetName(plainMap[bone]));
+                float first = RadiusFrom(withTwists, twistedMap.Skeleton.GetName(twistedMap[bone]));
+                float second = RadiusFrom(withTwists, twist);
+                Assert.That(first, Is.EqualTo(expected).Within(1e-4f), $"{bone} to its twist joint");
+                Assert.That(second, Is.EqualTo(expected).Within(1e-4f), $"{twist} to {next}");
+            }
+        }
+
+        // The radius of the capsule that hangs from the named joint (its first).
+        private static float RadiusFrom(MannequinBlueprint b, string joint)
+        {
+            for (int i = 0; i < b.Parts.Count; i++)
+                if (b.Parts[i].Shape == MannequinShape.Capsule && b.Joints[b.Parts[i].Joint].Name == joint) return b.Parts[i].Radius;
+            throw new AssertionException($"no capsule hangs from {joint}");
+        }
+
         [Test]
         public void PartsScaleWithTheBody()
         {
