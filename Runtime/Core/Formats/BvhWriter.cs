@@ -23,10 +23,15 @@ namespace AvatarGo.Core
         }
 
         /// <summary>Writes the clip as BVH text.</summary>
+        /// <exception cref="ArgumentException">The clip cannot be written so that <see cref="BvhReader"/> reads it back the
+        /// same (checked before anything is written): more than one root, a joint name that is empty or not words joined by single spaces,
+        /// a joint named like the name the reader gives an End Site (its parent's name and "_End"), a frame time or a value
+        /// outside what the reader takes.</exception>
         public static void Write(TextWriter writer, BvhClip clip)
         {
             if (writer == null) throw new ArgumentNullException(nameof(writer));
             if (clip == null) throw new ArgumentNullException(nameof(clip));
+            CheckReadable(clip);
             writer.NewLine = "\n";
             writer.WriteLine("HIERARCHY");
             List<int> written = WriteHierarchy(writer, clip);
@@ -59,6 +64,53 @@ namespace AvatarGo.Core
                 }
                 writer.WriteLine(line.ToString());
             }
+        }
+
+        // What the reader would refuse or read otherwise, refused before the first line (found in review: a frame time of
+        // 1e-5 s, a second root or a name with two spaces wrote a file that read back refused or renamed, and WriteFile
+        // replaced a good file with it).
+        private static void CheckReadable(BvhClip clip)
+        {
+            Skeleton s = clip.Skeleton;
+            int roots = 0;
+            var endSiteStems = new List<string>();
+            for (int j = 0; j < s.JointCount; j++)
+            {
+                if (s.GetParent(j) < 0) roots++;
+                if (s.IsEndSite(j)) { if (s.GetParent(j) >= 0) endSiteStems.Add(s.GetName(s.GetParent(j)) + "_End"); continue; }
+                string name = s.GetName(j);
+                if (!ReadsBack(name))
+                    throw new ArgumentException($"Joint {j} is named '{name}': a BVH reader reads a name's words joined by single spaces, so it would read another name.", nameof(clip));
+                CheckFinite(clip.GetFileOffset(j).X, $"joint {name}'s offset"); CheckFinite(clip.GetFileOffset(j).Y, $"joint {name}'s offset"); CheckFinite(clip.GetFileOffset(j).Z, $"joint {name}'s offset");
+            }
+            if (roots != 1) throw new ArgumentException($"The clip has {roots} roots; a BVH file holds one ROOT.", nameof(clip));
+            foreach (string stem in endSiteStems)
+                for (int j = 0; j < s.JointCount; j++)
+                    if (!s.IsEndSite(j) && s.GetName(j).StartsWith(stem, StringComparison.Ordinal))
+                        throw new ArgumentException($"Joint '{s.GetName(j)}' would clash with the name the reader gives an End Site of '{stem.Substring(0, stem.Length - 4)}'.", nameof(clip));
+            if (!(clip.FrameTime >= BvhReader.MinFrameTime && clip.FrameTime <= BvhReader.MaxFrameTime))
+                throw new ArgumentException($"Frame time {clip.FrameTime.ToString("R", CultureInfo.InvariantCulture)} s is outside the {BvhReader.MinFrameTime.ToString(CultureInfo.InvariantCulture)}–{BvhReader.MaxFrameTime.ToString(CultureInfo.InvariantCulture)} s a BVH reader takes.", nameof(clip));
+            for (int f = 0; f < clip.FrameCount; f++)
+                for (int c = 0; c < clip.ChannelCount; c++)
+                    CheckFinite(clip.GetValue(f, c), $"frame {f}, channel {c}");
+        }
+
+        // A name the reader reads back as it is: words (no other white space than single spaces between them).
+        private static bool ReadsBack(string name)
+        {
+            if (string.IsNullOrEmpty(name) || name[0] == ' ' || name[name.Length - 1] == ' ') return false;
+            for (int i = 0; i < name.Length; i++)
+            {
+                char ch = name[i];
+                if (ch == ' ' ? name[i - 1] == ' ' : char.IsWhiteSpace(ch)) return false;
+            }
+            return true;
+        }
+
+        private static void CheckFinite(float v, string where)
+        {
+            if (!(Math.Abs(v) <= BvhReader.MaxMagnitude))
+                throw new ArgumentException($"{where}: {v.ToString("R", CultureInfo.InvariantCulture)} is not a number within ±{BvhReader.MaxMagnitude.ToString(CultureInfo.InvariantCulture)}, which is all a BVH reader takes.");
         }
 
         // Depth-first, children in index order, with an explicit stack (a deep chain must not overflow the thread's
