@@ -86,13 +86,22 @@ namespace AvatarGo.Core
             if (roots != 1) throw new ArgumentException($"The clip has {roots} roots; a BVH file holds one ROOT.", nameof(clip));
             foreach (string stem in endSiteStems)
                 for (int j = 0; j < s.JointCount; j++)
-                    if (!s.IsEndSite(j) && s.GetName(j).StartsWith(stem, StringComparison.Ordinal))
+                    if (!s.IsEndSite(j) && IsEndSiteName(s.GetName(j), stem))
                         throw new ArgumentException($"Joint '{s.GetName(j)}' would clash with the name the reader gives an End Site of '{stem.Substring(0, stem.Length - 4)}'.", nameof(clip));
             if (!(clip.FrameTime >= BvhReader.MinFrameTime && clip.FrameTime <= BvhReader.MaxFrameTime))
                 throw new ArgumentException($"Frame time {clip.FrameTime.ToString("R", CultureInfo.InvariantCulture)} s is outside the {BvhReader.MinFrameTime.ToString(CultureInfo.InvariantCulture)}–{BvhReader.MaxFrameTime.ToString(CultureInfo.InvariantCulture)} s a BVH reader takes.", nameof(clip));
             for (int f = 0; f < clip.FrameCount; f++)
                 for (int c = 0; c < clip.ChannelCount; c++)
                     CheckFinite(clip.GetValue(f, c), $"frame {f}, channel {c}");
+        }
+
+        // The reader names an End Site after its parent, "_End", made unique with a number (BvhReader's UniqueName).
+        private static bool IsEndSiteName(string name, string stem)
+        {
+            if (!name.StartsWith(stem, StringComparison.Ordinal)) return false;
+            for (int i = stem.Length; i < name.Length; i++)
+                if (name[i] < '0' || name[i] > '9') return false;
+            return true;
         }
 
         // A name the reader reads back as it is: words (no other white space than single spaces between them).
