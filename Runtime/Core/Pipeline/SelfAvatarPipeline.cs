@@ -46,7 +46,6 @@ namespace AvatarGo.Core
         private float _armLength;
         private SwapEvidence _evidence;
         private readonly SteadyClock _clock = new SteadyClock(); // the tracking stages' time, once calibrated (Solve)
-        private double _trackingClock = double.NaN;              // _clock.Now
         private FullBodyIk _ik;
         private SkeletonPose _pose, _lastGood;
         private BodyTargets _targets;
@@ -225,7 +224,7 @@ namespace AvatarGo.Core
                 return false;
             }
             DeviceRole referenceRole = role == DeviceRole.Pelvis ? DeviceRole.Head : DeviceRole.Pelvis;
-            WindowAverage device = _window.Average(_roles[role], _trackingClock), reference = _window.Average(_roles[referenceRole], _trackingClock);
+            WindowAverage device = _window.Average(_roles[role], _clock.Now), reference = _window.Average(_roles[referenceRole], _clock.Now);
             if (!device.IsTracked || !reference.IsTracked) { reason = "the device or the " + referenceRole + " device was not tracked through the last half second"; return false; }
             if (!device.IsStill || !reference.IsStill) { reason = "the wearer was not still through the last half second"; return false; }
             // Where the calibration pose puts the joint relative to its reference joint, placed by the reference now.
@@ -407,13 +406,13 @@ namespace AvatarGo.Core
         {
             // The tracking stages measure the time between frames on their own clock (SteadyClock: a recording's clock
             // that jumps neither holds a lost part for good, nor eases it in one frame, nor opens the glitch filter).
-            _trackingClock = _clock.Advance(time);
+            double now = _clock.Advance(time);
             float dt = (float)_clock.LastStep;
-            _window.Add(_trackingClock, samples);
+            _window.Add(now, samples);
             // Bad samples out, lost devices' parts held and eased, returning ones blended back; without the HMD, freeze.
-            _sanitizer.Filter(_trackingClock, samples, _accepted);
-            _smoothing?.Apply(_trackingClock, _accepted);
-            if (!_continuity.Apply(_trackingClock, _accepted, _pose, _effective))
+            _sanitizer.Filter(now, samples, _accepted);
+            _smoothing?.Apply(now, _accepted);
+            if (!_continuity.Apply(now, _accepted, _pose, _effective))
             {
                 Freeze();
                 return;
