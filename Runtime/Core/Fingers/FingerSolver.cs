@@ -21,6 +21,10 @@ namespace AvatarGo.Core
     /// <see cref="MaxIterations"/>. Every frame starts
     /// from the grip solved once, at construction, for the nominal hold (from the best point of a coarse grid),
     /// not from the last frame, so the result depends on the controller's pose, not on the frame rate.
+    /// A frame whose hand lies where the last solve had it in the controller's frame (within
+    /// <see cref="ResolveDistance"/> and <see cref="ResolveAngle"/>, in the same mode) keeps that solve's grip without
+    /// descending again: the descent is a function of that pose alone, and a hand that follows its controller, as it does
+    /// whenever the arm reaches it, keeps one pose in the controller's frame to float precision.
     /// No allocation per frame.
     /// </remarks>
     public sealed class FingerSolver
@@ -40,6 +44,15 @@ namespace AvatarGo.Core
         /// <summary>When the palm is farther than this from the controller's surface (m), the hand opens: nothing to hold.</summary>
         public const float ReachDistance = 0.03f;
 
+        /// <summary>
+        /// How far (m) the hand may lie, in the controller's frame, from where the last solve had it before the fingers are
+        /// solved again (0.01 mm: a hundredth of what the descent's own tolerance moves a fingertip).
+        /// </summary>
+        public const float ResolveDistance = 1e-5f;
+
+        /// <summary>How far (radians) the hand may be turned, in the controller's frame, from the last solve's before the fingers are solved again.</summary>
+        public const float ResolveAngle = 1e-5f;
+
         private readonly HandModel _hand;
         private readonly ControllerProfile _profile;
         private readonly float[] _solved = new float[FingerParameters.Count];
@@ -52,6 +65,9 @@ namespace AvatarGo.Core
         private readonly RigidPose[] _fingerBase = new RigidPose[5];
         private Vector3 _thumbSpreadAxis;   // this frame's, in the controller frame, scaled by the full spread angle
         private readonly Vector3 _thumbGoal, _indexGoal;
+        // Where the hand was, in the controller's frame, when _solved was last descended to, and whether the index pointed.
+        private RigidPose _solvedFor;
+        private bool _solvedPointing, _hasSolved;
 
         /// <summary>Creates a solver for one hand and one controller.</summary>
         public FingerSolver(HandModel hand, ControllerProfile profile)
@@ -73,6 +89,7 @@ namespace AvatarGo.Core
             Array.Copy(_solved, _start, FingerParameters.Count);
             Array.Clear(_solved, 0, FingerParameters.Count);
             Array.Clear(_t, 0, FingerParameters.Count);
+            _hasSolved = false;
         }
 
         /// <summary>The hand.</summary>
@@ -84,8 +101,14 @@ namespace AvatarGo.Core
         /// <summary>The controller profile the fingers close on.</summary>
         public ControllerProfile Profile => _profile;
 
-        /// <summary>Iterations used by the last solve, summed over the fingers.</summary>
+        /// <summary>Iterations used by the last solve, summed over the fingers (0 when it kept the grip before it: <see cref="LastSolveReused"/>).</summary>
         public int LastIterations { get; private set; }
+
+        /// <summary>
+        /// True when the last <see cref="Solve"/> kept the grip of the solve before it, the hand lying where it was in the
+        /// controller's frame (within <see cref="ResolveDistance"/> and <see cref="ResolveAngle"/>, in the same mode).
+        /// </summary>
+        public bool LastSolveReused { get; private set; }
 
         /// <summary>True when the last solve found the controller out of the palm's reach and opened the hand.</summary>
         public bool OutOfReach { get; private set; }
@@ -97,26 +120,37 @@ namespace AvatarGo.Core
         public void Solve(RigidPose handWorld, RigidPose controllerWorld, GripMode mode, float trigger = float.NaN, float grip = float.NaN)
         {
             LastIterations = 0;
+            LastSolveReused = false;
             if (!handWorld.IsValid || !controllerWorld.IsValid) return; // keep the last good grip
-            PlaceHand(handWorld.RelativeTo(controllerWorld));
+            RigidPose handInController = handWorld.RelativeTo(controllerWorld);
+            PlaceHand(handInController);
             Vector3 palm = _handInController.TransformPoint(_hand.PalmCentreInHand);
             OutOfReach = _profile.Shape.Distance(palm) > ReachDistance;
             if (mode == GripMode.Open || OutOfReach)
             {
                 Array.Clear(_solved, 0, FingerParameters.Count);
                 Array.Clear(_t, 0, FingerParameters.Count);
+                _hasSolved = false;
                 return;
             }
-            for (int f = 0; f < 5; f++)
+            bool indexPoints = mode == GripMode.Point || (mode == GripMode.InputDriven && !(trigger > 0f));
+            LastSolveReused = _hasSolved && indexPoints == _solvedPointing && Near(handInController, _solvedFor);
+            if (!LastSolveReused)
             {
-                if (!_hand.HasFinger[f]) continue;
-                bool pointing = f == 1 && (mode == GripMode.Point || (mode == GripMode.InputDriven && !(trigger > 0f)));
-                if (pointing)
+                for (int f = 0; f < 5; f++)
                 {
-                    _solved[3] = _solved[4] = _solved[5] = 0f;
-                    continue;
+                    if (!_hand.HasFinger[f]) continue;
+                    if (f == 1 && indexPoints)
+                    {
+                        _solved[3] = _solved[4] = _solved[5] = 0f;
+                        continue;
+                    }
+                    LastIterations += SolveFinger(f);
                 }
-                LastIterations += SolveFinger(f);
+                // Compared with the pose of this descent, not of the last frame, so a hand drifting slowly is solved again.
+                _solvedFor = handInController;
+                _solvedPointing = indexPoints;
+                _hasSolved = true;
             }
             float g = float.IsNaN(grip) ? 1f : Math.Max(0f, Math.Min(1f, grip));
             float v = float.IsNaN(trigger) ? 0f : Math.Max(0f, Math.Min(1f, trigger));
@@ -235,6 +269,17 @@ namespace AvatarGo.Core
             _solved[o] = t.X; _solved[o + 1] = t.Y; _solved[o + 2] = t.Z;
             if (thumb) _solved[FingerParameters.ThumbSpreadIndex] = t.W;
             return iterations;
+        }
+
+        // Whether the hand lies within ResolveDistance and ResolveAngle of where it lay for the last descent.
+        private static bool Near(RigidPose a, RigidPose b)
+        {
+            if (Vector3.DistanceSquared(a.Position, b.Position) > ResolveDistance * ResolveDistance) return false;
+            // The vector part of the rotation between them is sin(angle / 2): resolved to float precision near 0,
+            // where the dot product's cos(angle / 2) is 1 in float below about 5e-4 rad.
+            Quaternion d = Quaternion.Conjugate(a.Rotation) * b.Rotation;
+            float half = 0.5f * ResolveAngle;
+            return d.X * d.X + d.Y * d.Y + d.Z * d.Z <= half * half;
         }
 
         // The descent has converged when no parameter moves more than this (0.2° at a joint).

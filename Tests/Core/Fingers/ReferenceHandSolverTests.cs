@@ -312,6 +312,99 @@ namespace AvatarGo.Core.Tests
             }
         }
 
+        // A new solver's grip for one frame: what a solve that never keeps an earlier grip gives.
+        private static float[] FreshGrip(HandModel model, ControllerProfile profile, RigidPose hand, RigidPose controller, GripMode mode, float trigger = float.NaN, float grip = float.NaN)
+        {
+            var solver = new FingerSolver(model, profile);
+            solver.Solve(hand, controller, mode, trigger, grip);
+            Assert.That(solver.LastSolveReused, Is.False, "a new solver descends");
+            return solver.Parameters.ToArray();
+        }
+
+        [Test]
+        public void AHandStillInItsControllerKeepsItsGripAndOneThatMovesIsSolvedAgain()
+        {
+            HumanoidMap map = ReferenceHandRig.Build(1f, Vector3.Normalize(new Vector3(1, 2, -3)), 9, Rotations.AngleAxis(30f, Vector3.UnitX));
+            foreach (ControllerProfile profile in Profiles())
+                foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+                {
+                    string what = $"{profile.Name} {side}";
+                    var model = new HandModel(map, side);
+                    var solver = new FingerSolver(model, profile);
+                    // The hand a little off the nominal hold (3 mm, 4°), the controller somewhere in the room.
+                    var controller = new RigidPose(new Vector3(0.3f, 1.1f, -0.4f), Rotations.AngleAxis(75f, new Vector3(0.3f, 1f, -0.2f)));
+                    RigidPose inController = model.WristInController(profile) * new RigidPose(new Vector3(0.003f, 0, 0), Rotations.AngleAxis(4f, Vector3.UnitZ));
+                    RigidPose hand = controller * inController;
+
+                    solver.Solve(hand, controller, GripMode.Hold);
+                    float[] solved = solver.Parameters.ToArray();
+                    Assert.That(solver.LastSolveReused, Is.False, what);
+                    Assert.That(solver.LastIterations, Is.GreaterThan(0), what);
+                    Assert.That(solved, Is.EqualTo(FreshGrip(model, profile, hand, controller, GripMode.Hold)), what + ": the first solve descends as a new solver does");
+
+                    // Hand and controller carried together across the room: the same grip, without a descent.
+                    var carried = new RigidPose(new Vector3(-1.5f, 0.2f, 2f), Rotations.AngleAxis(140f, new Vector3(1f, -0.5f, 0.2f)));
+                    solver.Solve(carried * hand, carried * controller, GripMode.Hold);
+                    Assert.That(solver.LastSolveReused, Is.True, what + ": carried");
+                    Assert.That(solver.LastIterations, Is.EqualTo(0), what);
+                    Assert.That(solver.Parameters.ToArray(), Is.EqualTo(solved), what + ": carried");
+
+                    // Half the tolerances away: kept, and as a new descent there would give it (within its own tolerance).
+                    RigidPose nudged = controller * new RigidPose(new Vector3(0, 0.5f * FingerSolver.ResolveDistance, 0), Quaternion.Identity) * inController;
+                    solver.Solve(nudged, controller, GripMode.Hold);
+                    Assert.That(solver.LastSolveReused, Is.True, what + ": nudged");
+                    float[] fresh = FreshGrip(model, profile, nudged, controller, GripMode.Hold);
+                    float[] kept = solver.Parameters.ToArray();
+                    for (int i = 0; i < solved.Length; i++)
+                        Assert.That(kept[i], Is.EqualTo(fresh[i]).Within(2e-3f), $"{what}: parameter {i} against a new descent half a tolerance away");
+                    RigidPose turned = controller * inController * new RigidPose(Vector3.Zero, Quaternion.CreateFromAxisAngle(Vector3.UnitY, 0.5f * FingerSolver.ResolveAngle));
+                    solver.Solve(turned, controller, GripMode.Hold);
+                    Assert.That(solver.LastSolveReused, Is.True, what + ": turned by half the angle");
+
+                    // Drifting 3 µm a frame: kept while within the tolerance of the pose last solved (not of the last
+                    // frame), so the drift is solved again before it adds up; every descent is a new solver's.
+                    RigidPose lastSolved = inController;
+                    int descents = 0;
+                    for (int i = 1; i <= 12; i++)
+                    {
+                        RigidPose drifted = new RigidPose(new Vector3(3e-6f * i, 0, 0), Quaternion.Identity) * inController;
+                        solver.Solve(controller * drifted, controller, GripMode.Hold);
+                        float apart = Vector3.Distance(drifted.Position, lastSolved.Position);
+                        if (solver.LastSolveReused)
+                            Assert.That(apart, Is.LessThanOrEqualTo(FingerSolver.ResolveDistance * 1.01f), $"{what}: kept {apart * 1e6f:F1} µm from its descent (frame {i})");
+                        else
+                        {
+                            descents++;
+                            lastSolved = drifted;
+                            Assert.That(solver.Parameters.ToArray(), Is.EqualTo(FreshGrip(model, profile, controller * drifted, controller, GripMode.Hold)), $"{what}: descent at frame {i}");
+                        }
+                    }
+                    Assert.That(descents, Is.InRange(3, 6), what + ": 36 µm of drift in 3 µm steps is solved again every 10 µm or so");
+
+                    // Turned by twice the angle tolerance: solved again.
+                    RigidPose turnedMore = controller * inController * new RigidPose(Vector3.Zero, Quaternion.CreateFromAxisAngle(Vector3.UnitY, 2f * FingerSolver.ResolveAngle));
+                    solver.Solve(turnedMore, controller, GripMode.Hold);
+                    Assert.That(solver.LastSolveReused, Is.False, what + ": turned by twice the angle");
+
+                    // Another mode at the same pose: pointing is descended again; an input-driven grip with the trigger
+                    // pressed closes the same fingers, blended by the inputs.
+                    solver.Solve(hand, controller, GripMode.Hold);
+                    solver.Solve(hand, controller, GripMode.Point);
+                    Assert.That(solver.LastSolveReused, Is.False, what + ": pointing");
+                    Assert.That(solver.Parameters.ToArray(), Is.EqualTo(FreshGrip(model, profile, hand, controller, GripMode.Point)), what + ": pointing");
+                    solver.Solve(hand, controller, GripMode.Hold);
+                    solver.Solve(hand, controller, GripMode.InputDriven, 0.5f, 0.7f);
+                    Assert.That(solver.LastSolveReused, Is.True, what + ": the trigger pressed closes the index as the hold does");
+                    Assert.That(solver.Parameters.ToArray(), Is.EqualTo(FreshGrip(model, profile, hand, controller, GripMode.InputDriven, 0.5f, 0.7f)), what + ": input-driven");
+
+                    // Opened (or out of reach) and closed again: descended again.
+                    solver.Solve(hand, controller, GripMode.Open);
+                    solver.Solve(hand, controller, GripMode.Hold);
+                    Assert.That(solver.LastSolveReused, Is.False, what + ": after the open hand");
+                    Assert.That(solver.Parameters.ToArray(), Is.EqualTo(solved), what + ": after the open hand");
+                }
+        }
+
         [Test]
         public void TheGripPointSitsOnThePalmCentreAndTheWristFollowsTheController()
         {

@@ -171,6 +171,48 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void AGripKeptWhileTheHandFollowsItsControllerIsTheGripOfANewDescent()
+        {
+            // The Mixamo session with fingers, every frame's grip against a descent from scratch on that frame's wrist and
+            // controller (a second solver on the same hand, opened before each solve so that it never keeps a grip).
+            ControllerProfile controller = Profile("vive-wand");
+            string session = Sessions.Simulate("mixamo_fingers_30fps.bvh", new SimulationOptions { Controller = controller });
+            var reference = new FingerSolver[2];
+            int frames = 0, kept = 0;
+            float worst = 0f;
+            bool calibrated = false;
+            Sessions.Replay(session, WithController(controller), (i, pipeline, frame) =>
+            {
+                if (pipeline.State != CalibrationState.Calibrated) return;
+                if (!calibrated)
+                {
+                    calibrated = true; // the calibrating frame shows the calibration pose; the fingers are solved from the next
+                    return;
+                }
+                for (int s = 0; s < 2; s++)
+                {
+                    var side = (BodySide)s;
+                    HandState hand = pipeline.Hand(side);
+                    Assert.That(hand.HasFingerIk, Is.True, hand.NoFingerIkReason);
+                    reference[s] ??= new FingerSolver(hand.Solver.Hand, hand.Solver.Profile);
+                    RigidPose wrist = pipeline.Pose.World[pipeline.ScaledAvatar[side == BodySide.Left ? HumanoidBone.LeftHand : HumanoidBone.RightHand]];
+                    reference[s].Solve(wrist, hand.ControllerPose, GripMode.Open);
+                    reference[s].Solve(wrist, hand.ControllerPose, GripMode.Hold);
+                    float[] fresh = reference[s].Parameters.ToArray(), solved = hand.Fingers.ToArray();
+                    for (int k = 0; k < fresh.Length; k++) worst = Math.Max(worst, Math.Abs(fresh[k] - solved[k]));
+                    frames++;
+                    if (hand.Solver.LastSolveReused) kept++;
+                }
+            });
+            TestContext.WriteLine($"{kept} of {frames} hand frames kept the grip before; largest difference from a new descent {worst:G3} in t");
+            Assert.That(frames, Is.GreaterThan(400));
+            // Within the descent's own convergence tolerance (2e-3 in t, 0.2 degrees at a joint).
+            Assert.That(worst, Is.LessThanOrEqualTo(2e-3f));
+            // A hand the arm reaches stays where its controller holds it: most frames need no descent.
+            Assert.That(kept, Is.GreaterThan(frames / 2), "frames whose grip was kept");
+        }
+
+        [Test]
         public void AControllerOutOfReachIsDrawnInTheHandWithoutAJump()
         {
             var wearer = new Wearer("mocapbank_30fps.bvh", 42);

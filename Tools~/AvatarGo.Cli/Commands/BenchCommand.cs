@@ -4,6 +4,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
+using System.Numerics;
 using System.Runtime.InteropServices;
 using System.Text.Json;
 using AvatarGo.Core;
@@ -28,8 +29,10 @@ public sealed class BenchCommand : ICommand
         the motion, played forward and back with the clock running on (so that one run continues the last
         without a jump): the whole pipeline (SelfAvatarPipeline.Update: targets, body IK, hands on the
         controllers, both hands' finger IK) as the headline case; the body alone (the same pipeline
-        without finger IK); both hands' fingers alone (FingerSolver on the poses the pipeline produced);
-        and the body's two stages (devices -> targets, targets -> posed skeleton). Reports nanoseconds per
+        without finger IK); both hands' fingers alone (FingerSolver on the poses the pipeline produced,
+        where a hand that follows its controller keeps its grip without a descent), and again with each
+        wrist moved 25 micrometres in its controller every other frame, so that every frame descends (the
+        worst case: a hand sliding in its controller, an arm out of reach); and the body's two stages (devices -> targets, targets -> posed skeleton). Reports nanoseconds per
         frame (median over N runs, with min and max), bytes allocated per frame on this thread (must be 0),
         how many avatars one core could solve in a 90 Hz frame, and the machine. Run it in Release:
         dotnet run --project Tools~/AvatarGo.Cli -c Release -- bench
@@ -67,7 +70,11 @@ public sealed class BenchCommand : ICommand
             Measure(fixture.HasFingers ? "whole pipeline (body + both hands' fingers)" : "whole pipeline (this avatar has no finger bones)", fixture, runs, warm, f => f.RunPipeline()),
             Measure("body only (pipeline without finger IK)", fixture, runs, warm, f => f.RunBodyOnly()),
         };
-        if (fixture.HasFingers) results.Add(Measure("fingers only (both hands)", fixture, runs, warm, f => f.RunFingers()));
+        if (fixture.HasFingers)
+        {
+            results.Add(Measure("fingers only (both hands)", fixture, runs, warm, f => f.RunFingers()));
+            results.Add(Measure("  fingers, descended every frame", fixture, runs, warm, f => f.RunFingersMoving()));
+        }
         results.Add(Measure("  body: devices -> targets", fixture, runs, warm, f => f.RunTargets()));
         results.Add(Measure("  body: targets -> posed skeleton (IK)", fixture, runs, warm, f => f.RunIk()));
         double avatars = Math.Floor(FrameNs90Hz / results[0].Median);
@@ -208,7 +215,7 @@ internal sealed class BenchFixture
     private BodyTargets[] _targets;
     private BodyTargets _scratch;
     private readonly FingerSolver[] _fingers = new FingerSolver[2];
-    private RigidPose[][] _wrists, _controllers;
+    private RigidPose[][] _wrists, _controllers, _movedWrists;
 
     public string Clip { get; private set; }
     public int Frames => _samples.Length;
@@ -282,6 +289,13 @@ internal sealed class BenchFixture
             f._controllers[0][i] = f._pipeline.Hand(BodySide.Left).ControllerPose;
             f._controllers[1][i] = f._pipeline.Hand(BodySide.Right).ControllerPose;
         }
+        // Every other frame's wrist moved by more than FingerSolver.ResolveDistance in its own frame, so that no frame
+        // keeps the grip of the one before.
+        var moved = new RigidPose(new Vector3(2.5f * FingerSolver.ResolveDistance, 0f, 0f), Quaternion.Identity);
+        f._movedWrists = new[] { new RigidPose[f.Frames], new RigidPose[f.Frames] };
+        for (int s = 0; s < 2; s++)
+            for (int i = 0; i < f.Frames; i++)
+                f._movedWrists[s][i] = i % 2 == 0 ? f._wrists[s][i] : f._wrists[s][i] * moved;
         return f;
     }
 
@@ -304,6 +318,16 @@ internal sealed class BenchFixture
         {
             _fingers[0].Solve(_wrists[0][i], _controllers[0][i], GripMode.Hold);
             _fingers[1].Solve(_wrists[1][i], _controllers[1][i], GripMode.Hold);
+        }
+    }
+
+    public void RunFingersMoving()
+    {
+        if (!HasFingers) return;
+        for (int i = 0; i < _samples.Length; i++)
+        {
+            _fingers[0].Solve(_movedWrists[0][i], _controllers[0][i], GripMode.Hold);
+            _fingers[1].Solve(_movedWrists[1][i], _controllers[1][i], GripMode.Hold);
         }
     }
 
