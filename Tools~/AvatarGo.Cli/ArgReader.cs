@@ -6,7 +6,7 @@ namespace AvatarGo.Cli;
 
 /// <summary>
 /// Minimal option parser: positional arguments plus `--name value` and `--flag` options. Every option
-/// a command accepts must be read; <see cref="ThrowOnUnknown"/> rejects the rest.
+/// a command accepts must be read; <see cref="ThrowOnUnknown"/> rejects the rest. An option given twice is a usage error.
 /// </summary>
 public sealed class ArgReader
 {
@@ -31,6 +31,8 @@ public sealed class ArgReader
                     if (i + 1 >= args.Length) throw new UsageException($"option --{name} needs a value");
                     value = args[++i];
                 }
+                // The second of two values used to win silently (--frames 0:1 --frames 2:3 printed frame 2).
+                if (_options.ContainsKey(name)) throw new UsageException($"option --{name} is given twice");
                 _options[name] = value;
             }
             else _positional.Add(a);

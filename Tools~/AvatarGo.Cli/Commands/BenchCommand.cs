@@ -53,6 +53,7 @@ public sealed class BenchCommand : ICommand
         bool calibration = a.Flag("calibration");
         int runs = a.Int("runs", 15);
         string bvh = a.String("bvh");
+        bool framesGiven = a.String("frames") != null;
         int frames = a.Int("frames", int.MaxValue);
         double warmup = a.Double("warmup", 1);
         ControllerProfile controller = ControllerProfiles.Named(a.String("controller", ControllerProfiles.Default))
@@ -62,6 +63,7 @@ public sealed class BenchCommand : ICommand
         if (frames < 1) throw new UsageException("--frames must be at least 1");
         if (!(warmup >= 0 && warmup <= 60)) throw new UsageException("--warmup must be between 0 and 60 seconds");
 
+        if (calibration && (json || framesGiven)) throw new UsageException("--json and --frames do not go with --calibration");
         if (calibration) return RunCalibration(bvh, runs, warmup, controller, stdout);
         var fixture = BenchFixture.Create(bvh ?? DemoCommandPaths.BundledClip("mixamo_fingers_30fps.bvh"), frames, controller);
         var warm = TimeSpan.FromSeconds(warmup);

@@ -29,7 +29,7 @@ public sealed class BvhPositionsCommand : ICommand
         double scale = a.Double("scale", 1.0);
         string range = a.String("frames");
         a.ThrowOnUnknown(1);
-        if (!(scale > 0)) throw new UsageException("--scale must be positive");
+        if (!((float)scale > 0f)) throw new UsageException("--scale must be positive (and at least a float's smallest, 1e-45)"); // 1e-50 was 0 as a float
 
         BvhClip clip = BvhReader.ReadFile(path, new BvhReadOptions { Scale = (float)scale });
         (int from, int to) = ParseRange(range, clip.FrameCount);

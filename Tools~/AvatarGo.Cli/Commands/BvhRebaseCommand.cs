@@ -33,11 +33,13 @@ public sealed class BvhRebaseCommand : ICommand
         if (a.Positional.Count < 2) throw new UsageException("missing IN and OUT");
         string input = a.Positional[0], output = a.Positional[1];
         string rest = a.String("rest") ?? throw new UsageException("missing --rest x-along|random");
+        bool seedGiven = a.String("seed") != null;
         int seed = a.Int("seed", 1);
         double twist = a.Double("twist", 0);
         a.ThrowOnUnknown(2);
         if (rest != "x-along" && rest != "random") throw new UsageException($"--rest must be x-along or random, got '{rest}'");
         if (rest == "random" && twist != 0) throw new UsageException("--twist applies to --rest x-along only");
+        if (rest == "x-along" && seedGiven) throw new UsageException("--seed applies to --rest random only");
 
         BvhClip clip = BvhReader.ReadFile(input);
         BvhClip rebased = rest == "x-along" ? BvhRebaser.AlongX(clip, (float)twist) : BvhRebaser.RandomAxes(clip, seed);

@@ -53,7 +53,12 @@ public sealed class FuzzCommand : ICommand
         bool trace = a.Flag("trace");
         string outFile = a.String("out");
         a.ThrowOnUnknown(0);
-        if (!(seconds > 0)) throw new UsageException("--seconds must be positive");
+        // At most a million seconds (11.6 days): 1e12, which the option parser allows, overflowed a TimeSpan and aborted the process.
+        if (!(seconds > 0 && seconds <= 1e6)) throw new UsageException("--seconds must be positive and at most 1e6");
+        if (!(slowMs > 0 && slowMs <= 1e6)) throw new UsageException("--slow-ms must be positive and at most 1e6");
+        long replayIndex = -1;
+        if (replay != null && !long.TryParse(replay, NumberStyles.None, CultureInfo.InvariantCulture, out replayIndex))
+            throw new UsageException($"--replay expects the index of a generated input (0 or more), got '{replay}'");
         if (!(inputs > 0)) throw new UsageException("--inputs must be positive");
         if (outFile != null && replay == null) throw new UsageException("--out goes with --replay");
 
@@ -70,14 +75,22 @@ public sealed class FuzzCommand : ICommand
         var reports = new List<FuzzReport>();
         int exit = 0;
         // A 1 MB stack, like Unity's main thread on Windows: recursion bounded only by the input shows up here first.
+        // What the thread throws is thrown again here, after Join, so that Program reports it (an exception on another
+        // thread aborted the process: a --replay --out into a missing folder ended with exit 134).
+        Exception failure = null;
         var thread = new Thread(() =>
+        {
+            try { RunTargets(); }
+            catch (Exception e) { failure = e; }
+        }, 1 << 20);
+        void RunTargets()
         {
             foreach (string t in targets)
             {
                 var runner = new FuzzRunner(FuzzTargets.Create(t, seeds), options, stderr);
                 if (replay != null)
                 {
-                    var outcome = runner.Replay(long.Parse(replay, CultureInfo.InvariantCulture), out string input);
+                    var outcome = runner.Replay(replayIndex, out string input);
                     stdout.WriteLine($"{t} input {replay} of seed {seed} ({input.Length:N0} chars): {(outcome.Bucket == null ? (outcome.Parsed ? "parsed" : "refused with a FormatException") : "FAILS: " + outcome.Description)} in {outcome.Milliseconds:0.0} ms");
                     if (outcome.Bucket != null) exit = 1;
                     if (outFile != null) AtomicFileWriter.WriteAllText(outFile, input);
@@ -86,9 +99,10 @@ public sealed class FuzzCommand : ICommand
                 stderr.WriteLine($"fuzzing {t} for up to {seconds:0} s (seed {seed}, corpus {corpus})");
                 reports.Add(runner.Run());
             }
-        }, 1 << 20);
+        }
         thread.Start();
         thread.Join();
+        if (failure != null) System.Runtime.ExceptionServices.ExceptionDispatchInfo.Capture(failure).Throw();
         if (replay != null) return exit;
 
         stdout.WriteLine("target       inputs   generated  parsed   failures  kinds  seconds  inputs/s  slowest ms");

@@ -147,6 +147,12 @@ public sealed class SimulateCommand : ICommand
         if (!(o.ExerciseSeconds >= 0 && o.ExerciseSeconds <= 60)) throw new UsageException("--exercise-seconds must be between 0 and 60");
         if (!(o.Rate >= 10 && o.Rate <= 1000)) throw new UsageException("--rate must be between 10 and 1000 Hz");
         if (o.PositionNoise < 0 || o.RotationNoiseDegrees < 0) throw new UsageException("noise must not be negative");
+        // Within what a session can hold (positions within 10 km): beyond, the writer refused a device's pose (exit 1,
+        // naming a device) on some seeds and not others.
+        if (!(o.PositionNoise <= 1f)) throw new UsageException("--noise-mm must be at most 1000");
+        if (!(o.RotationNoiseDegrees <= 180f)) throw new UsageException("--noise-deg must be at most 180");
+        if (!(Math.Abs(o.Misalignment.X) <= 10f)) throw new UsageException("--misalign-mm must be within ±10000");
+        if (!(Math.Abs(o.MisalignmentYawDegrees) <= 360f)) throw new UsageException("--misalign-deg must be within ±360");
         return o;
     }
 }

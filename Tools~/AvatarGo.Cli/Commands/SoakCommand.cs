@@ -1,3 +1,4 @@
+using System;
 using System.Globalization;
 using System.IO;
 using System.Text.Json;
@@ -38,9 +39,16 @@ public sealed class SoakCommand : ICommand
         var inv = CultureInfo.InvariantCulture;
         stdout.WriteLine(string.Create(inv, $"{r.Frames} frames ({r.Minutes:0.#} min at 90 Hz) solved in {r.SolveSeconds:0.0} s"));
         stdout.WriteLine(string.Create(inv, $"bytes allocated after the first minute: {r.BytesAllocated} ({(double)r.BytesAllocated / (r.Frames - 5400):0.###} per frame)"));
-        stdout.WriteLine(string.Create(inv, $"managed memory after the first minute {r.MemoryAfterWarmUp / 1024.0:0} KiB, at the end {r.MemoryAtEnd / 1024.0:0} KiB ({(r.MemoryAtEnd - r.MemoryAfterWarmUp) / 1024.0:+0;-0} KiB)"));
+        stdout.WriteLine(string.Create(inv, $"managed memory after the first minute {r.MemoryAfterWarmUp / 1024.0:0} KiB, at the end {r.MemoryAtEnd / 1024.0:0} KiB ({SignedKiB(r.MemoryAtEnd - r.MemoryAfterWarmUp)} KiB)"));
         stdout.WriteLine(string.Create(inv, $"end effectors, first minute after warm-up: median {r.FirstMinuteMedianMm:0.00} p95 {r.FirstMinuteP95Mm:0.00} mm; last minute: median {r.LastMinuteMedianMm:0.00} p95 {r.LastMinuteP95Mm:0.00} mm"));
         if (r.NonFiniteFrames > 0) stdout.WriteLine($"NON-FINITE end effectors: {r.NonFiniteFrames}");
         return r.NonFiniteFrames == 0 ? 0 : 1;
+    }
+
+    // A change in whole KiB with its sign; a small negative change printed "-+0" with the format "+0;-0".
+    private static string SignedKiB(long bytes)
+    {
+        double kib = Math.Round(bytes / 1024.0) + 0.0; // + 0.0 turns -0.0 into 0.0
+        return kib == 0.0 ? "0" : kib.ToString("+0;-0", CultureInfo.InvariantCulture);
     }
 }

@@ -16,7 +16,7 @@ public class PipelineCommandTests
         Assert.That(doc.RootElement.GetProperty("avatars_per_core_at_90hz").GetDouble(), Is.GreaterThan(0));
         var cases = doc.RootElement.GetProperty("cases");
         Assert.That(cases[0].GetProperty("name").GetString(), Does.StartWith("whole pipeline"), "the headline case");
-        Assert.That(cases.GetArrayLength(), Is.EqualTo(5));
+        Assert.That(cases.GetArrayLength(), Is.EqualTo(6), "whole, body only, fingers, fingers descended every frame, targets, IK");
         foreach (var c in cases.EnumerateArray())
         {
             // Exactly zero: per-frame paths must not allocate (a GC stall is a dropped frame in VR).

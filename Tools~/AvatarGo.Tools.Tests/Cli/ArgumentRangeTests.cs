@@ -1,0 +1,87 @@
+using System;
+using System.IO;
+using NUnit.Framework;
+
+namespace AvatarGo.Tools.Tests;
+
+/// <summary>
+/// Arguments a command cannot honour are bad arguments (exit 2, naming the option), found before any work: each case
+/// here once failed later, as an unreadable input (exit 1) naming something else, or aborted the process.
+/// </summary>
+public class ArgumentRangeTests
+{
+    private string _dir;
+
+    [SetUp]
+    public void MakeFolder()
+    {
+        _dir = Path.Combine(Path.GetTempPath(), "avatargo-args-" + Guid.NewGuid().ToString("N"));
+        Directory.CreateDirectory(_dir);
+    }
+
+    [TearDown]
+    public void RemoveFolder()
+    {
+        if (Directory.Exists(_dir)) Directory.Delete(_dir, true);
+    }
+
+    private static void AssertBadArgument(CliRunner.Result r, string option)
+    {
+        Assert.That(r.ExitCode, Is.EqualTo(2), r.ToString());
+        StringAssert.Contains(option, r.Stderr);
+    }
+
+    [Test]
+    public void AnOptionGivenTwiceIsABadArgument()
+    {
+        // The second value used to win silently: frame 2 was printed.
+        var r = CliRunner.Run("bvh", "positions", Paths.Mocap("mocapbank_30fps.bvh"), "--frames", "0:1", "--frames", "2:3");
+        AssertBadArgument(r, "--frames");
+        StringAssert.Contains("twice", r.Stderr);
+    }
+
+    // Beyond what a session holds (positions within 10 km) the writer refused a device's pose: exit 1, on some seeds.
+    [TestCase("--noise-mm", "1e7")]
+    [TestCase("--noise-deg", "1e12")]
+    [TestCase("--misalign-mm", "1e12")]
+    [TestCase("--misalign-deg", "-1e12")]
+    public void SimulatedNoiseAndMisalignmentBeyondASessionsRangeAreBadArguments(string option, string value)
+    {
+        string output = Path.Combine(_dir, "x.agsession");
+        AssertBadArgument(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--out", output, option, value), option);
+        Assert.That(File.Exists(output), Is.False, "nothing written");
+    }
+
+    [Test]
+    public void AScaleThatIsZeroAsAFloatIsABadArgument() =>
+        // 1e-50 passed the check on the double and reached the reader as 0: exit 1 naming BvhReadOptions.Scale.
+        AssertBadArgument(CliRunner.Run("bvh", "positions", Paths.Mocap("mocapbank_30fps.bvh"), "--scale", "1e-50"), "--scale");
+
+    [Test]
+    public void ASeedWithBonesAlongXIsABadArgument() =>
+        AssertBadArgument(CliRunner.Run("bvh", "rebase", Paths.Mocap("mocapbank_30fps.bvh"), Path.Combine(_dir, "out.bvh"), "--rest", "x-along", "--seed", "5"), "--seed");
+
+    [TestCase("--seconds", "1e12")] // a TimeSpan overflowed: the process aborted
+    [TestCase("--slow-ms", "-1")]   // every input counted as slow and valid seeds were saved as failures
+    [TestCase("--replay", "abc")]   // parsed on the fuzzing thread: the process aborted
+    [TestCase("--replay", "-3")]
+    public void FuzzOptionsOutOfRangeAreBadArguments(string option, string value) =>
+        AssertBadArgument(CliRunner.Run("fuzz", "--target", "json", "--inputs", "1", "--no-crafted", "--corpus", _dir, option, value), option);
+
+    [Test]
+    public void WhatTheFuzzingThreadThrowsIsReportedNotAnAbort()
+    {
+        // An output folder that does not exist, written on the fuzzing thread: the process aborted (exit 134).
+        var r = CliRunner.Run("fuzz", "--target", "json", "--replay", "3", "--out", Path.Combine(_dir, "missing", "x.json"));
+        Assert.That(r.ExitCode, Is.EqualTo(1), r.ToString());
+        StringAssert.Contains("does not exist", r.Stderr);
+    }
+
+    [TestCase("--json")]
+    [TestCase("--frames")]
+    public void OptionsOfTheFrameBenchAreRefusedWithTheCalibrationBench(string option)
+    {
+        string[] args = option == "--json" ? new[] { "bench", "--calibration", "--json" } : new[] { "bench", "--calibration", "--frames", "5" };
+        AssertBadArgument(CliRunner.Run(args), "--calibration");
+    }
+}
