@@ -23,7 +23,10 @@ namespace AvatarGo.Core
     /// <c>twistReference</c> (the rest pose unless another pose is given), and nothing in the core depends on it (the
     /// solver bends limbs from positions; tested by rewriting clips in random local axes).</para>
     /// <para>Fallbacks where a landmark is missing: hips whose spine starts on the hip line keep the reference pitch; a
-    /// chest whose clavicles start at one point (Rigify) or a head without eyes keeps the reference twist; a hand without
+    /// chest whose clavicles start at one point (Rigify) keeps the reference twist; a head without eyes stands its crown
+    /// up (its one child besides the jaw, a leaf at least half as far from it as it is from the neck) and keeps the
+    /// reference twist about it, and without that crown keeps the reference rotation relative to the neck; a spine joint
+    /// aims at the next joint toward the head that does not sit on it; a hand without
     /// finger bases points along its child (or keeps the reference rotation when it has none, as an end site); a foot
     /// without a child (no toes, no end site) keeps its reference rotation and stands <see cref="AnkleHeightOfLeg"/> of a
     /// leg above the floor.</para>
@@ -227,7 +230,7 @@ namespace AvatarGo.Core
                 case BoneRole.Spine:
                 {
                     // Up toward its child on the way to the head (the next spine bone, or a joint between that stands up too).
-                    int next = ChildToward(pose.Skeleton, j, map[HumanoidBone.Head]);
+                    int next = NextTowardHead(map, pose, j);
                     if (next < 0) next = map[HumanoidBone.Head]; // a spine bone mapped off the way to the head (by hand)
                     // Level across the arms' roots when this joint carries them: the clavicles, or the upper arms of a rig
                     // without clavicles (whose shoulders this joint's turn alone places). Only the joint's own children:
@@ -239,14 +242,24 @@ namespace AvatarGo.Core
                 }
                 case BoneRole.Head:
                 {
-                    // The eye line level along +X and the crown up; without a crown, the eyes where HeadToEyes puts them.
+                    // The eye line level along +X and the crown up; without a crown, the eyes where HeadToEyes puts them;
+                    // without eyes, the crown up and the facing (the twist about it) from the reference; with neither, the
+                    // reference rotation.
                     int le = map[HumanoidBone.LeftEye], re = map[HumanoidBone.RightEye];
-                    if (le < 0 || re < 0) return false;
+                    if (le < 0 || re < 0)
+                    {
+                        int top = CrownWithoutEyes(map, pose, j);
+                        return top >= 0 && Turn(pose, j, At(pose, top) - At(pose, j), Vector3.UnitY);
+                    }
+                    // The eyes first (where HeadToEyes puts them), so that what lies above them is judged in a head that
+                    // faces the T-pose's way whatever the reference turned it to; then the crown, if one lies above them.
                     Vector3 eyes = (At(pose, le) + At(pose, re)) * 0.5f - At(pose, j);
-                    int crown = Crown(map, j);
+                    bool turned = Turn(pose, j, At(pose, re) - At(pose, le), Vector3.UnitX, eyes, Vector3.Normalize(HeadToEyes));
+                    if (turned) UpdateSubtree(pose, j);
+                    int crown = CrownAboveEyes(map, pose, j, (At(pose, le) + At(pose, re)) * 0.5f - At(pose, j));
                     return crown >= 0
                         ? Turn(pose, j, At(pose, re) - At(pose, le), Vector3.UnitX, At(pose, crown) - At(pose, j), Vector3.UnitY)
-                        : Turn(pose, j, At(pose, re) - At(pose, le), Vector3.UnitX, eyes, Vector3.Normalize(HeadToEyes));
+                        : turned;
                 }
                 case BoneRole.Clavicle:
                     return Turn(pose, j, At(pose, map[HumanoidBones.OnSide(HumanoidBone.LeftUpperArm, side)]) - At(pose, j), outward);
@@ -303,7 +316,7 @@ namespace AvatarGo.Core
                 }
                 case BoneRole.SpinePath:
                 {
-                    int next = ChildToward(pose.Skeleton, j, map[HumanoidBone.Head]);
+                    int next = NextTowardHead(map, pose, j);
                     return next >= 0 && Turn(pose, j, At(pose, next) - At(pose, j), Vector3.UnitY);
                 }
                 case BoneRole.Toes:
@@ -321,6 +334,20 @@ namespace AvatarGo.Core
         {
             int l = map[left], r = map[right];
             return l >= 0 && r >= 0 && pose.Skeleton.GetParent(l) == j && pose.Skeleton.GetParent(r) == j ? At(pose, r) - At(pose, l) : Vector3.Zero;
+        }
+
+        // The first joint after j on the way to the head that does not sit on j (a joint at j's place, two joints at one
+        // place, gives no direction: taken as the next one, it left the chest in its reference rotation, the shoulders
+        // 54 mm apart between two references), or -1 off that way.
+        private static int NextTowardHead(HumanoidMap map, SkeletonPose pose, int j)
+        {
+            Skeleton s = pose.Skeleton;
+            int head = map[HumanoidBone.Head];
+            float reach = Vector3.Distance(At(pose, j), At(pose, head));
+            int next = ChildToward(s, j, head);
+            while (next >= 0 && next != head && Vector3.Distance(At(pose, next), At(pose, j)) <= 1e-3f * reach)
+                next = ChildToward(s, next, head);
+            return next;
         }
 
         // The child of `joint` that `descendant` hangs from (or is), or -1.
@@ -369,21 +396,57 @@ namespace AvatarGo.Core
 
         private static Vector3 At(SkeletonPose pose, int joint) => pose.World[joint].Position;
 
-        // The head's child that is neither an eye nor the jaw and lies above the eyes' level: the crown, if the rig has one.
-        private static int Crown(HumanoidMap map, int head)
+        // The crown of a head already faced by its eyes: of its children that are neither an eye nor the jaw, the one that
+        // lies highest, within CrownConeDegrees of straight up and above the eyes (eyes: their midpoint from the head).
+        // Ears beside the head and hair behind it are not the crown: taken for it (the longest child), they turned the
+        // head by 9 and 68 degrees and lowered the eyes by up to 13 cm, the avatar's scale with them.
+        private static int CrownAboveEyes(HumanoidMap map, SkeletonPose pose, int head, Vector3 eyes)
         {
             Skeleton s = map.Skeleton;
+            float cone = MathF.Cos(CrownConeDegrees * Rotations.Deg2Rad);
             int best = -1;
-            float bestLength = 0f;
+            float bestHeight = Math.Max(eyes.Y, 0f);
             for (int c = head + 1; c < s.JointCount; c++)
             {
-                if (s.GetParent(c) != head) continue;
-                HumanoidBone bone = map.BoneOf(c);
-                if (bone == HumanoidBone.LeftEye || bone == HumanoidBone.RightEye || bone == HumanoidBone.Jaw) continue;
-                float length = s.GetRestLocal(c).Position.Length();
-                if (length > bestLength) { best = c; bestLength = length; }
+                if (s.GetParent(c) != head || IsEyeOrJaw(map, c)) continue;
+                Vector3 offset = At(pose, c) - At(pose, head);
+                float length = offset.Length();
+                if (!(length > 1e-6f) || offset.Y < cone * length) continue;
+                if (offset.Y > bestHeight) { best = c; bestHeight = offset.Y; }
             }
             return best;
+        }
+
+        // How far from straight up a crown may lie in a head faced by its eyes (degrees): the top of the skull lies within
+        // about 20 degrees of it; ears and the back of the skull lie beyond 50.
+        private const float CrownConeDegrees = 40f;
+
+        // The crown of a head without eyes, where nothing says which way the head faces: its one child besides the jaw, when
+        // that is a leaf (an End Site, a joint with nothing below it: hair and other chains are not) at least half as far
+        // from the head as the head from its humanoid parent (a skull's height against its neck's; Rigify's 3 cm face End
+        // Site, pointing forward, is not a crown), else -1 (the head keeps its reference rotation).
+        private static int CrownWithoutEyes(HumanoidMap map, SkeletonPose pose, int head)
+        {
+            Skeleton s = map.Skeleton;
+            int below = HumanoidParent(map, head), crown = -1;
+            if (below < 0) return -1;
+            for (int c = head + 1; c < s.JointCount; c++)
+            {
+                if (s.GetParent(c) != head || IsEyeOrJaw(map, c)) continue;
+                if (crown >= 0) return -1; // two candidates: which is the crown is not known
+                crown = c;
+            }
+            if (crown < 0) return -1;
+            for (int c = crown + 1; c < s.JointCount; c++)
+                if (s.GetParent(c) == crown) return -1;
+            float neck = Vector3.Distance(At(pose, head), At(pose, below));
+            return s.GetRestLocal(crown).Position.Length() >= 0.5f * neck ? crown : -1;
+        }
+
+        private static bool IsEyeOrJaw(HumanoidMap map, int joint)
+        {
+            HumanoidBone bone = map.BoneOf(joint);
+            return bone == HumanoidBone.LeftEye || bone == HumanoidBone.RightEye || bone == HumanoidBone.Jaw;
         }
 
         private static int FarthestChild(Skeleton s, int joint)

@@ -110,5 +110,95 @@ namespace AvatarGo.Core.Tests
             Assert.DoesNotThrow(() => TPoser.Apply(map, pose, RigidPose.Identity));
             foreach (RigidPose p in pose.World) Assert.That(Vectors.IsFinite(p.Position) && Rotations.IsFinite(p.Rotation), Is.True, "no NaN");
         }
+
+        private static BvhClip Read(string file) => BvhReader.ReadFile(TestData.Mocap(file), new BvhReadOptions { ToMetres = true });
+
+        private static RigidPose[] FirstFrame(BvhClip clip)
+        {
+            var local = new RigidPose[clip.Skeleton.JointCount];
+            clip.GetLocalPoses(0, local);
+            return local;
+        }
+
+        // The T-pose with the twists no landmark fixes taken from the rest (null) or from other local poses.
+        private static SkeletonPose TPose(HumanoidMap map, RigidPose[] reference)
+        {
+            var pose = new SkeletonPose(map.Skeleton);
+            TPoser.Apply(map, pose, RigidPose.Identity, reference);
+            return pose;
+        }
+
+        // The largest distance (mm) of a humanoid joint between the T-pose from the rest and from the clip's first frame.
+        private static double ReferenceSpreadMm(BvhClip clip, HumanoidMap map)
+        {
+            SkeletonPose fromRest = TPose(map, null), fromFirst = TPose(map, FirstFrame(clip));
+            double most = 0;
+            for (int b = 0; b < HumanoidBones.Count; b++)
+                if (map.Has((HumanoidBone)b))
+                    most = System.Math.Max(most, 1000.0 * Vector3.Distance(fromRest.World[map[(HumanoidBone)b]].Position, fromFirst.World[map[(HumanoidBone)b]].Position));
+            return most;
+        }
+
+        [Test]
+        public void AJointAtTheSamePlaceAsItsSpineJointDoesNotLeaveTheSpineToTheReference()
+        {
+            // A joint on Chest2, between it and the neck (two joints at one place): taken as the way up, it gave no
+            // direction, and Chest2 kept its reference rotation (the shoulders 54 mm apart between two references).
+            BvhClip clip = Topology.WithJointsAbove(Read("mocapbank_30fps.bvh"), ("Neck", "NeckBase", 0f));
+            HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
+            Assert.That(ReferenceSpreadMm(clip, map), Is.LessThan(1.0));
+        }
+
+        [Test]
+        public void AHeadWithoutEyesStandsItsCrownUpWhateverTheReference()
+        {
+            // MocapBank's head has no eyes, only its End Site at the crown: the crown straight up from either reference (it
+            // was carried from the reference with the neck: 9.6 degrees apart between the rest and the first frame).
+            BvhClip clip = Read("mocapbank_30fps.bvh");
+            HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
+            Assert.That(map.Has(HumanoidBone.LeftEye), Is.False);
+            int head = map[HumanoidBone.Head], crown = -1;
+            for (int j = 0; j < clip.Skeleton.JointCount; j++)
+                if (clip.Skeleton.GetParent(j) == head) crown = j;
+            foreach (RigidPose[] reference in new[] { null, FirstFrame(clip) })
+            {
+                SkeletonPose pose = TPose(map, reference);
+                Vector3 up = pose.World[crown].Position - pose.World[head].Position;
+                Assert.That(Vectors.AngleDegrees(up, Vector3.UnitY), Is.LessThan(0.01), reference == null ? "from the rest" : "from the first frame");
+            }
+        }
+
+        [Test]
+        public void EarsAndHairOnTheHeadAreNotItsCrown()
+        {
+            // The Mixamo head without its HeadTop_End: its eyes alone orient it. Ears beside it, or a hair root behind it,
+            // taken for the crown (the longest child), turned the head by 9 and 68 degrees and lowered the eyes by up to
+            // 13 cm, the avatar's scale off by 8.8 %.
+            BvhClip original = Read("mixamo_fingers_30fps.bvh");
+            int headTop = original.Skeleton.IndexOf("mixamorig:HeadTop_End");
+            Assert.That(headTop, Is.GreaterThanOrEqualTo(0));
+            int headTopEnd = original.Skeleton.IndexOf("mixamorig:HeadTop_End_End"); // HeadTop_End's End Site
+            Assert.That(headTopEnd, Is.GreaterThanOrEqualTo(0));
+            BvhClip eyesOnly = Topology.Without(original, headTop, headTopEnd);
+            var variants = new Dictionary<string, BvhClip>
+            {
+                ["ears"] = Topology.WithLeaves(eyesOnly, ("mixamorig:Head", "mixamorig:LeftEar", new Vector3(0.075f, 0.05f, -0.01f)), ("mixamorig:Head", "mixamorig:RightEar", new Vector3(-0.075f, 0.05f, -0.01f))),
+                ["hair behind"] = Topology.WithLeaves(eyesOnly, ("mixamorig:Head", "mixamorig:Hair1", new Vector3(0f, 0.04f, -0.11f))),
+            };
+            HumanoidMap plainMap = HumanoidNaming.Detect(eyesOnly.Skeleton);
+            SkeletonPose plain = TPose(plainMap, null);
+            foreach (var variant in variants)
+            {
+                HumanoidMap map = HumanoidNaming.Detect(variant.Value.Skeleton);
+                SkeletonPose pose = TPose(map, null);
+                Assert.That(Rotations.AngleDegrees(plain.World[plainMap[HumanoidBone.Head]].Rotation, pose.World[map[HumanoidBone.Head]].Rotation), Is.LessThan(0.01), variant.Key);
+                Assert.That(TPoser.EyePosition(map, pose, Quaternion.Identity).Y, Is.EqualTo(TPoser.EyePosition(plainMap, plain, Quaternion.Identity).Y).Within(1e-5f), variant.Key + ": eye height");
+            }
+            // A crown above the eyes is still one: the original's HeadTop_End stands straight up.
+            HumanoidMap originalMap = HumanoidNaming.Detect(original.Skeleton);
+            SkeletonPose withTop = TPose(originalMap, null);
+            Vector3 up = withTop.World[headTop].Position - withTop.World[originalMap[HumanoidBone.Head]].Position;
+            Assert.That(Vectors.AngleDegrees(up, Vector3.UnitY), Is.LessThan(0.01), "HeadTop_End is the crown");
+        }
 }
 }

@@ -131,6 +131,25 @@ namespace AvatarGo.Core.Tests
         }
 
         /// <summary>
+        /// <paramref name="clip"/> with leaf joints added: each named <c>name</c>, hanging from <c>parent</c> at
+        /// <c>offset</c> in the parent's frame with its rotation, carried with it in every frame (ears and hair on a head,
+        /// a prop on a hand).
+        /// </summary>
+        public static BvhClip WithLeaves(BvhClip clip, params (string parent, string name, Vector3 offset)[] leaves)
+        {
+            Skeleton s = clip.Skeleton;
+            var joints = new List<NewJoint>();
+            for (int j = 0; j < s.JointCount; j++) joints.Add(Same(s, j, s.GetParent(j), s.GetName(j)));
+            foreach (var (parent, name, offset) in leaves)
+            {
+                int p = s.IndexOf(parent);
+                if (p < 0) throw new ArgumentException($"No joint {parent}.", nameof(leaves));
+                joints.Add(new NewJoint { Name = name, Parent = p, Source = p, World = w => w[p] * new RigidPose(offset, Quaternion.Identity) });
+            }
+            return Rebuild(clip, joints);
+        }
+
+        /// <summary>
         /// <paramref name="clip"/> with each named joint hanging from another parent (3ds Max Biped's clavicles under the
         /// neck), every joint keeping its world pose in every frame; the joints are reordered so that parents come first.
         /// </summary>
