@@ -14,9 +14,10 @@ public static class BoneMapFile
 {
     /// <summary>Reads the map at <paramref name="path"/>.</summary>
     /// <exception cref="FormatException">A line is not `joint = Bone`, names no humanoid bone, or gives a joint or a bone twice (the message names the line).</exception>
-    /// <exception cref="IOException">The file cannot be read.</exception>
+    /// <exception cref="IOException">The file cannot be read, or the path is a folder.</exception>
     public static IReadOnlyDictionary<string, HumanoidBone> Read(string path)
     {
+        if (Directory.Exists(path)) throw new IOException($"{path} is a folder, not a file.");
         var map = new Dictionary<string, HumanoidBone>(StringComparer.Ordinal);
         var bones = new HashSet<HumanoidBone>();
         string[] lines = File.ReadAllLines(path);

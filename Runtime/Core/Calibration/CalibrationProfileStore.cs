@@ -153,9 +153,11 @@ namespace AvatarGo.Core
 
         /// <summary>Loads a profile saved by <see cref="Save"/>.</summary>
         /// <exception cref="FormatException">The file is not a valid profile; the message (<c>FILE:LINE: problem</c>) names the problem.</exception>
+        /// <exception cref="IOException">The file cannot be read, or the path is a folder.</exception>
         public static CalibrationProfile Load(string path)
         {
             if (path == null) throw new ArgumentNullException(nameof(path));
+            InputFiles.ThrowIfFolder(path);
             string name = Path.GetFileName(path);
             // Refuse a huge file before reading it into memory.
             long length = new FileInfo(path).Length;

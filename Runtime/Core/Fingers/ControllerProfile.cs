@@ -112,11 +112,12 @@ namespace AvatarGo.Core
 
         /// <summary>Reads and parses a profile file; errors read <c>FILE:LINE: problem</c>.</summary>
         /// <exception cref="FormatException">The file is not a valid controller profile.</exception>
-        /// <exception cref="IOException">The file cannot be read.</exception>
+        /// <exception cref="IOException">The file cannot be read, or the path is a folder.</exception>
         /// <exception cref="UnauthorizedAccessException">The file may not be read (its permissions).</exception>
         public static ControllerProfile Load(string path)
         {
             if (path == null) throw new ArgumentNullException(nameof(path));
+            InputFiles.ThrowIfFolder(path);
             string name = Path.GetFileName(path);
             long length = new FileInfo(path).Length;
             if (length > MaxFileLength * 4L) throw new FormatException($"{name}:1: {length} bytes is more than a controller profile holds (at most {MaxFileLength} characters)");

@@ -49,9 +49,10 @@ namespace AvatarGo.Core
 
         /// <summary>Reads a BVH file from disk.</summary>
         /// <exception cref="FormatException">The file is not valid BVH.</exception>
-        /// <exception cref="IOException">The file cannot be read.</exception>
+        /// <exception cref="IOException">The file cannot be read, or the path is a folder.</exception>
         public static BvhClip ReadFile(string path, BvhReadOptions options = null)
         {
+            InputFiles.ThrowIfFolder(path);
             using (var reader = new StreamReader(path))
                 return Read(reader, Path.GetFileName(path), options);
         }

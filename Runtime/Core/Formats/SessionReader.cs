@@ -61,8 +61,12 @@ namespace AvatarGo.Core
         }
 
         /// <summary>Opens a session file and reads its header.</summary>
-        public static SessionReader Open(string path) =>
-            new SessionReader(new StreamReader(path, System.Text.Encoding.UTF8, true, 1 << 16), Path.GetFileName(path), ownsReader: true);
+        /// <exception cref="IOException">The file cannot be read, or the path is a folder.</exception>
+        public static SessionReader Open(string path)
+        {
+            InputFiles.ThrowIfFolder(path);
+            return new SessionReader(new StreamReader(path, System.Text.Encoding.UTF8, true, 1 << 16), Path.GetFileName(path), ownsReader: true);
+        }
 
         /// <summary>The session header.</summary>
         public SessionHeader Header { get; }

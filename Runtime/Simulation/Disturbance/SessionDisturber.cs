@@ -34,9 +34,12 @@ namespace AvatarGo.Simulation
             _disturbed = new bool[devices];
             _lostNow = new bool[devices];
             _maxBurst = Math.Max(1, (int)Math.Round(options.DropoutMaxSeconds * rate));
-            // Lost a fraction r of the time with bursts of mean length L: a burst starts with probability r / (L (1 - r)).
+            // Lost a fraction r of the time with bursts of mean length L (the frame a burst starts on among them): a burst
+            // starts, on a frame not already lost, with probability p = r / (L (1 - r) + r), so that the share lost,
+            // p L / (p L + 1 - p), is r. (r / (L (1 - r)) left out the start frame: with one-frame bursts at r = 0.5, p was 1
+            // and the device was lost on every frame.)
             double meanBurst = (1 + _maxBurst) / 2.0;
-            _burstStart = options.DropoutRate / (meanBurst * (1 - options.DropoutRate));
+            _burstStart = options.DropoutRate / (meanBurst * (1 - options.DropoutRate) + options.DropoutRate);
             _teleportLength = Math.Max(1, (int)Math.Round(options.TeleportSeconds * rate));
             _teleportStart = options.TeleportMetres > 0f ? options.TeleportsPerMinute / (60.0 * rate) : 0;
         }

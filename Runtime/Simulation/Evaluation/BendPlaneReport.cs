@@ -19,7 +19,7 @@ namespace AvatarGo.Simulation
 
         /// <summary>
         /// The wearer's limb must bend at least this much (180° minus its interior angle) for a frame to count: 15°, where a
-        /// knee is about 4 cm (an elbow 3 cm) off the line between its neighbours. Below that the bend direction is within
+        /// knee is 4–6 cm (legs of 65–87 cm) and an elbow about 3 cm off the line between its neighbours. Below that the bend direction is within
         /// what mocap joint centres are sure of (1-2 cm): the shared Rigify clip's knees, never bent more than 12°, lean
         /// sideways and backward by a few degrees (hyperextended), which no solver that bends knees forward reproduces.
         /// </summary>
@@ -55,7 +55,7 @@ namespace AvatarGo.Simulation
         /// </summary>
         public static double SignedAngleDegrees(Vector3 root, Vector3 middle, Vector3 end, Vector3 avatarRoot, Vector3 avatarMiddle, Vector3 avatarEnd)
         {
-            if (180.0 - Vectors.AngleDegrees(root - middle, end - middle) < MinBendDegrees) return double.NaN;
+            if (!BendsEnough(root, middle, end)) return double.NaN;
             Vector3 axis = Vectors.NormalizeOr(end - root, Vector3.UnitY);
             Vector3 truthBend = Vectors.ProjectOnPlane(middle - root, axis);
             // The avatar's bend direction off its own limb axis, then seen about the wearer's: a shoulder a few
@@ -66,6 +66,11 @@ namespace AvatarGo.Simulation
             return Math.Atan2(Vector3.Dot(axis, Vector3.Cross(truthBend, avatarBend)), Vector3.Dot(truthBend, avatarBend)) * (180.0 / Math.PI);
         }
 
+        /// <summary>True when the wearer's limb (root, middle, end joint) bends at least <see cref="MinBendDegrees"/>.</summary>
+        public static bool BendsEnough(Vector3 root, Vector3 middle, Vector3 end) =>
+            180.0 - Vectors.AngleDegrees(root - middle, end - middle) >= MinBendDegrees;
+
+        // One counted frame; NaN or infinity (a non-finite avatar) goes to the series' InvalidCount and is not a flip.
         internal void Add(double signedDegrees)
         {
             SignedDegrees.Add(signedDegrees);

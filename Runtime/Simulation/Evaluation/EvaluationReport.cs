@@ -19,7 +19,7 @@ namespace AvatarGo.Simulation
         /// <summary>Why calibration failed, when it did.</summary>
         public string CalibrationMessage { get; internal set; }
 
-        /// <summary>Position error per humanoid joint, in millimetres.</summary>
+        /// <summary>Position error per humanoid joint but the finger bones (the fingers are in <see cref="Fingers"/>), in millimetres.</summary>
         public Dictionary<HumanoidBone, ErrorSeries> JointPositionMm { get; } = new Dictionary<HumanoidBone, ErrorSeries>();
 
         /// <summary>Position error of the end effectors (hips, head, hands, feet), in millimetres.</summary>
@@ -28,7 +28,10 @@ namespace AvatarGo.Simulation
         /// <summary>Position error of the middle joints (elbows, knees), in millimetres.</summary>
         public ErrorSeries MidJointMm { get; } = new ErrorSeries();
 
-        /// <summary>Position error over all compared joints (MPJPE samples), in millimetres.</summary>
+        /// <summary>
+        /// Position error over all compared joints (MPJPE samples), in millimetres: every humanoid joint the avatar and the
+        /// truth share but the finger bones, which the fingertips' gaps to the controller measure instead (<see cref="Fingers"/>).
+        /// </summary>
         public ErrorSeries AllJointsMm { get; } = new ErrorSeries();
 
         /// <summary>Rotation error of the end effectors (change since calibration, avatar vs wearer), in degrees.</summary>

@@ -210,10 +210,18 @@ namespace AvatarGo.Simulation
             {
                 HumanoidBone middle = limb.Joint, root = HumanoidBones.Parent(middle), end = LimbEnd(middle);
                 if (!frame.HasTruth[(int)root] || !frame.HasTruth[(int)middle] || !frame.HasTruth[(int)end]) continue;
-                double angle = BendPlaneReport.SignedAngleDegrees(frame.Truth[(int)root].Position, frame.Truth[(int)middle].Position, frame.Truth[(int)end].Position,
-                    pose.World[scaled[root]].Position, pose.World[scaled[middle]].Position, pose.World[scaled[end]].Position);
-                if (double.IsNaN(angle)) limb.StraightFrames++;
-                else limb.Add(angle);
+                Vector3 r = frame.Truth[(int)root].Position, m = frame.Truth[(int)middle].Position, e = frame.Truth[(int)end].Position;
+                if (!BendPlaneReport.BendsEnough(r, m, e))
+                {
+                    limb.StraightFrames++;
+                    continue;
+                }
+                Vector3 ar = pose.World[scaled[root]].Position, am = pose.World[scaled[middle]].Position, ae = pose.World[scaled[end]].Position;
+                // A non-finite avatar is counted as such (InvalidCount), not as a wearer's straight limb: it was left out of
+                // every figure under that name.
+                limb.Add(Vectors.IsFinite(ar) && Vectors.IsFinite(am) && Vectors.IsFinite(ae)
+                    ? BendPlaneReport.SignedAngleDegrees(r, m, e, ar, am, ae)
+                    : double.NaN);
             }
         }
 

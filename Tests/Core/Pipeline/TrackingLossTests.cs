@@ -60,6 +60,23 @@ namespace AvatarGo.Core.Tests
             Assert.That(identical, Is.GreaterThanOrEqualTo(calmFrames), "frames at which the avatar is the one without losses");
         }
 
+        [TestCase(0.3f, 0.011f), TestCase(0.5f, 0.011f), TestCase(0.5f, 0.05f), TestCase(0.05f, 1f), TestCase(0.2f, 1f)]
+        public void EachDeviceIsLostTheShareOfFramesAskedFor(float rate, float longestBurstSeconds)
+        {
+            // Bursts of one frame (0.011 s at 90 Hz) at a rate of 0.5 lost every device on every frame, 0.3 lost 43 %: the
+            // chance of a burst left out the frame it starts on.
+            var disturber = new SessionDisturber(6, 90f, new DisturbanceOptions { DropoutRate = rate, DropoutMaxSeconds = longestBurstSeconds, Seed = 7 });
+            var frame = new SessionFrame(new SessionHeader(90f, SessionSimulator.Devices(), null, null));
+            long lost = 0, total = 0;
+            for (int f = 0; f < 100_000; f++)
+            {
+                for (int d = 0; d < 6; d++) frame.Samples[d] = new DeviceSample(RigidPose.Identity, true);
+                disturber.Apply(frame);
+                for (int d = 0; d < 6; d++, total++) if (!frame.Samples[d].IsTracked) lost++;
+            }
+            Assert.That(lost / (double)total, Is.EqualTo(rate).Within(0.01), "share of device-frames lost");
+        }
+
         [Test]
         public void TenMetreTeleportsAreNotFollowed()
         {

@@ -35,6 +35,7 @@ public sealed class CalibrateCommand : ICommand
         string avatarMap = AvatarMapArgument(a, avatarFile);
         string save = a.String("save");
         a.ThrowOnUnknown(1);
+        OutputFiles.RefuseClashes(new[] { ("the session", path), ("--avatar", avatarFile), ("--avatar-map", avatarMap) }, new[] { ("--save", save) });
 
         using SessionReader reader = SessionReader.Open(path);
         HumanoidMap avatar = avatarFile != null

@@ -33,7 +33,12 @@ public sealed class DemoCommand : ICommand
         string outBvh = a.String("out-bvh");
         SimulationOptions options = SimulateCommand.Options(a);
         string mapPath = a.String("map");
+        // Read by the simulation options, not demo's: its figures are those of evaluate's defaults without a controller,
+        // and it scores every frame after calibration (an exercise would be scored).
+        foreach (string option in new[] { "controller", "exercise-seconds" })
+            if (a.String(option) != null) throw new UsageException($"demo does not take --{option} (simulate and evaluate do)");
         a.ThrowOnUnknown(0);
+        OutputFiles.RefuseClashes(new[] { ("--bvh", bvh), ("--map", mapPath) }, new[] { ("--out-bvh", outBvh) });
 
         BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
         SessionSimulator simulator;
@@ -49,43 +54,36 @@ public sealed class DemoCommand : ICommand
             stderr.WriteLine($"avatargo demo: {Path.GetFileName(bvh)} cannot be simulated: {e.Message.Split(" (Parameter '")[0].TrimEnd('.')}{SimulateCommand.MissingNote(map, note)}");
             return 1;
         }
-        string session = Path.Combine(Path.GetTempPath(), $"avatargo-demo-{Environment.ProcessId}.agsession");
-        try
-        {
-            var progress = new ProgressBar(stderr);
-            if (!SimulateCommand.WriteSession(simulator, session, stderr, "demo", p => progress.Report("simulating", p / 3))) return 1;
+        var progress = new ProgressBar(stderr);
+        string session = SimulateCommand.SimulateToText(simulator, stderr, "demo", p => progress.Report("simulating", p / 3));
+        if (session == null) return 1;
 
-            var solved = new List<RigidPose[]>();
-            EvaluationReport exact, fixedOffsets;
-            using (SessionReader reader = SessionReader.Open(session))
-                exact = SessionEvaluator.Evaluate(reader, new PipelineSettings { Offsets = OffsetMode.Exact }, null,
-                    outBvh == null ? null : pipeline => solved.Add((RigidPose[])pipeline.Pose.Local.Clone()));
-            progress.Report("solving", 2f / 3);
-            using (SessionReader reader = SessionReader.Open(session))
-                fixedOffsets = SessionEvaluator.Evaluate(reader, OffsetMode.Fixed);
-            progress.Report("done", 1f);
-            progress.Finish();
+        var solved = new List<RigidPose[]>();
+        EvaluationReport exact, fixedOffsets;
+        using (var reader = new SessionReader(new StringReader(session), "demo session"))
+            exact = SessionEvaluator.Evaluate(reader, new PipelineSettings { Offsets = OffsetMode.Exact }, null,
+                outBvh == null ? null : pipeline => solved.Add((RigidPose[])pipeline.Pose.Local.Clone()));
+        progress.Report("solving", 2f / 3);
+        using (var reader = new SessionReader(new StringReader(session), "demo session"))
+            fixedOffsets = SessionEvaluator.Evaluate(reader, OffsetMode.Fixed);
+        progress.Report("done", 1f);
+        progress.Finish();
 
-            if (exact.Profile == null)
-            {
-                stderr.WriteLine($"avatargo demo: calibration did not complete: {exact.CalibrationMessage}");
-                return 1;
-            }
-            PrintTable(stdout, Path.GetFileName(bvh), clip, simulator.FrameCount, options, exact, fixedOffsets);
-            SimulateCommand.PrintClipNotes(simulator, stdout);
-            if (note != null) stdout.WriteLine(note);
-            if (outBvh != null)
-            {
-                Skeleton wearer = simulator.Wearer.Skeleton; // the clip's, mirrored when the simulator mirrored it
-                BvhWriter.WriteFile(outBvh, BvhClip.FromPoses(exact.Profile != null ? wearer.Scaled(exact.Profile.AvatarScale) : wearer, solved, 1f / options.Rate, 0.01f));
-                stdout.WriteLine($"solved avatar written to {outBvh} (centimetres, {solved.Count} frames)");
-            }
-            return 0;
-        }
-        finally
+        if (exact.Profile == null)
         {
-            File.Delete(session);
+            stderr.WriteLine($"avatargo demo: calibration did not complete: {exact.CalibrationMessage}");
+            return 1;
         }
+        PrintTable(stdout, Path.GetFileName(bvh), clip, simulator.FrameCount, options, exact, fixedOffsets);
+        SimulateCommand.PrintClipNotes(simulator, stdout);
+        if (note != null) stdout.WriteLine(note);
+        if (outBvh != null)
+        {
+            Skeleton wearer = simulator.Wearer.Skeleton; // the clip's, mirrored when the simulator mirrored it
+            BvhWriter.WriteFile(outBvh, BvhClip.FromPoses(exact.Profile != null ? wearer.Scaled(exact.Profile.AvatarScale) : wearer, solved, 1f / options.Rate, 0.01f));
+            stdout.WriteLine($"solved avatar written to {outBvh} (centimetres, {solved.Count} frames)");
+        }
+        return 0;
     }
 
     private static void PrintTable(TextWriter o, string name, BvhClip clip, int frames, SimulationOptions options, EvaluationReport exact, EvaluationReport fixedOffsets)

@@ -23,7 +23,8 @@ public sealed class EvaluateCommand : ICommand
         walk-in offsets, body IK, hands on the controllers, finger IK) and compares the avatar (the
         wearer's own skeleton from the session) with the ground truth on every frame after calibration:
         per joint and for end effectors (hips, head, hands, feet), mid joints (elbows, knees) and all
-        joints, the median, mean, 95th percentile and maximum position error in mm; end-effector rotation
+        joints but the finger bones (MPJPE: the mean over those), the median, mean, 95th percentile and
+        maximum position error in mm; end-effector rotation
         error and knee angle error in degrees; and, for an avatar with finger bones, the fingers on the
         solved body: the deepest penetration of the controller and each fingertip's gap (mm).
           --mode exact|fixed   exact offsets (the paper's method, default) or fixed offsets (its baseline)
@@ -70,7 +71,7 @@ public sealed class EvaluateCommand : ICommand
         median / p95 / max in degrees and the share of frames beyond 90 deg ("flipped"), frames in which the
         wearer's limb bends at least 15 deg; the signed median is right-handed about each limb's root-to-end axis,
         so the same anatomical error reads with opposite signs on the left and right limbs.
-        Exit codes: 0 ok, 1 unreadable session or calibration failed, 2 bad arguments.
+        Exit codes: 0 ok, 1 unreadable session, calibration failed or nothing to compare (no frame with the true joints), 2 bad arguments.
         """;
 
     public int Run(string[] args, TextWriter stdout, TextWriter stderr)
@@ -101,12 +102,18 @@ public sealed class EvaluateCommand : ICommand
         if (exercise && (disturbance != null || outputs.IsRecording)) throw new UsageException("--refine and --exercise-seconds do not combine with disturbances or --positions / --bvh-out / --plot");
         if (exercise && !(exerciseSeconds > 0 && exerciseSeconds <= 60)) throw new UsageException("--exercise-seconds must be more than 0 and at most 60");
         if (!(legScale > 0.5f && legScale < 2f) || !(armScale > 0.5f && armScale < 2f)) throw new UsageException("limb scales must be between 0.5 and 2");
+        OutputFiles.RefuseClashes(new[] { ("the session", path), ("--avatar", avatarFile), ("--avatar-map", avatarMap) }, outputs.Paths.Prepend(("--json", json)));
+        // Every output written together after the evaluation, or none replaced (a plot that could not be drawn once left
+        // the JSON and the positions replaced by a run that failed).
+        using var files = new OutputFiles();
+        AtomicFileWriter jsonFile = json != null ? files.Open(json) : null;
+        outputs.Open(files);
         EvaluationReport report;
         using (SessionReader reader = SessionReader.Open(path))
         {
             HumanoidMap avatar = avatarFile != null
                 ? CalibrateCommand.AvatarFrom(avatarFile, avatarMap)
-                : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no ground-truth skeleton; give --avatar FILE");
+                : reader.Header.TruthHumanoid ?? throw new UsageException("the session has no ground-truth skeleton (a recording from a headset has none, and nothing to compare with; 'simulate' writes sessions that do); give --avatar FILE for the avatar");
             if (legScale != 1f || armScale != 1f) avatar = Proportions.ScaleLimbs(avatar, legScale, armScale);
             report = exercise
                 ? SessionEvaluator.EvaluateExercise(reader, settings, avatar, (float)exerciseSeconds, refine)
@@ -123,6 +130,13 @@ public sealed class EvaluateCommand : ICommand
             stderr.WriteLine("avatargo evaluate: the session ends when the calibration completes: no frame was compared");
             return 1;
         }
+        if (report.AllJointsMm.Count == 0 && report.AllJointsMm.InvalidCount == 0)
+        {
+            // A session recorded from a headset (or with its truth lines removed) given an --avatar: it calibrated and
+            // solved, but every figure was NaN and the exit code 0 (--json then failed naming a serializer setting).
+            stderr.WriteLine("avatargo evaluate: no frame of the session carries the wearer's true joints (a recording from a headset has none; 'simulate' writes sessions that do): nothing to compare");
+            return 1;
+        }
         if (refine && report.Refinement == null)
         {
             stderr.WriteLine($"avatargo evaluate: the session ended within the {exerciseSeconds.ToString(CultureInfo.InvariantCulture)} s of the exercise: nothing was refined");
@@ -130,8 +144,10 @@ public sealed class EvaluateCommand : ICommand
         }
         Print(report, stdout);
         if (report.Refinement != null) PrintRefinement(report.Refinement, stdout);
-        if (json != null) AtomicFileWriter.WriteAllText(json, ToJson(report)); // whole or not at all: a failure leaves an older OUT as it was
-        outputs.Write(stdout);
+        if (jsonFile != null) OutputFiles.WriteText(jsonFile, w => w.Write(ToJson(report)));
+        outputs.Write();
+        files.CommitAll();
+        outputs.Report(stdout);
         return 0;
     }
 
@@ -236,6 +252,9 @@ public sealed class EvaluateCommand : ICommand
             Row(o, "  " + bone, s);
         if (r.AllJointsMm.InvalidCount > 0)
             o.WriteLine($"non-finite: {r.AllJointsMm.InvalidCount} joint errors were NaN or infinite and are left out of the figures above");
+        foreach (BendPlaneReport b in r.BendPlanes)
+            if (b.AbsoluteDegrees.InvalidCount > 0)
+                o.WriteLine($"non-finite: {b.Joint}'s bend plane on {b.AbsoluteDegrees.InvalidCount} frames (a NaN or infinite avatar joint), left out of its figures");
         if (r.Disturbance != null)
         {
             DisturbanceReport d = r.Disturbance;
@@ -357,6 +376,7 @@ public sealed class EvaluateCommand : ICommand
         flipped_frames = b.FlippedFrames,
         frames = b.AbsoluteDegrees.Count,
         straight_frames = b.StraightFrames,
+        non_finite_frames = b.AbsoluteDegrees.InvalidCount,
     });
 
     // JSON has no NaN: a statistic of no frames is null.

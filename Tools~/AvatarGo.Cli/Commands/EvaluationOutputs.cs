@@ -26,6 +26,7 @@ internal sealed class EvaluationOutputs
         { HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg, HumanoidBone.LeftLowerArm, HumanoidBone.RightLowerArm };
 
     private readonly string _positions, _bvh, _plot;
+    private AtomicFileWriter _positionsFile, _bvhFile, _plotFile;
     private readonly List<int> _frames = new();
     private readonly List<double> _times = new();
     private readonly List<Vector3[]> _solved = new(), _truth = new();
@@ -33,6 +34,7 @@ internal sealed class EvaluationOutputs
     private HumanoidBone[] _bones;
     private Skeleton _skeleton;
     private float _rate;
+    private SessionReader _reader;
 
     private EvaluationOutputs(string positions, string bvh, string plot)
     {
@@ -45,7 +47,8 @@ internal sealed class EvaluationOutputs
     public const string Help = """
           --positions OUT.csv  the solved and true world position of every humanoid joint per compared frame
                                (header: frame,time,Bone.solved.x,Bone.solved.y,Bone.solved.z,Bone.truth.x,...;
-                               frame = the session frame's index, time in s, positions in metres, Unity's frame)
+                               frame = the session frame's index, time in s, positions in metres, Unity's frame;
+                               the finger bones' columns too, which MPJPE leaves out)
           --bvh-out OUT.bvh    the solved avatar's motion (the scaled avatar, compared frames, centimetres)
           --plot OUT.png       per-frame errors over time: end effectors, knees and elbows (mm), and the knees'
                                and elbows' bend-plane angle error (deg)
@@ -59,11 +62,23 @@ internal sealed class EvaluationOutputs
 
     private bool Recording => _positions != null || _bvh != null || _plot != null;
 
+    /// <summary>The output paths, by option, for <see cref="OutputFiles.RefuseClashes"/>.</summary>
+    public IEnumerable<(string what, string path)> Paths => new[] { ("--positions", _positions), ("--bvh-out", _bvh), ("--plot", _plot) };
+
+    /// <summary>Opens the files asked for in <paramref name="files"/> (before the evaluation: a folder that does not exist is said at once).</summary>
+    public void Open(OutputFiles files)
+    {
+        if (_positions != null) _positionsFile = files.Open(_positions);
+        if (_bvh != null) _bvhFile = files.Open(_bvh);
+        if (_plot != null) _plotFile = files.Open(_plot);
+    }
+
     /// <summary>Runs the evaluation, recording every compared frame when an output is asked for.</summary>
     public EvaluationReport Evaluate(SessionReader reader, PipelineSettings settings, HumanoidMap avatar, DisturbanceOptions disturbance)
     {
         if (!Recording) return SessionEvaluator.Evaluate(reader, settings, avatar, null, disturbance);
         _rate = reader.Header.Rate;
+        _reader = reader;
         return SessionEvaluator.EvaluateWithTruth(reader, settings, avatar, Record, disturbance);
     }
 
@@ -82,38 +97,35 @@ internal sealed class EvaluationOutputs
             solved[i] = pipeline.Pose.World[scaled[_bones[i]]].Position;
             truth[i] = frame.Truth[(int)_bones[i]].Position;
         }
-        _frames.Add((int)Math.Round(frame.Time * _rate));
+        // The index of the frame just read; its time times the rate was not one where the clock does not start at 0 (a
+        // recording's unscaled time) or the frames are not evenly spaced.
+        _frames.Add(_reader.FrameCount - 1);
         _times.Add(frame.Time);
         _solved.Add(solved);
         _truth.Add(truth);
         if (_bvh != null) _locals.Add((RigidPose[])pipeline.Pose.Local.Clone());
     }
 
-    /// <summary>Writes the outputs asked for and says where.</summary>
-    public void Write(TextWriter stdout)
+    /// <summary>Writes the outputs asked for into the files <see cref="Open"/> opened (committed by the caller, with the others).</summary>
+    public void Write()
     {
         if (!Recording || _bones == null) return;
-        if (_positions != null)
+        if (_positionsFile != null) OutputFiles.WriteText(_positionsFile, w => WritePositions(w, CultureInfo.InvariantCulture));
+        if (_bvhFile != null)
         {
-            WritePositions(_positions);
-            stdout.WriteLine($"positions written to {_positions} ({_frames.Count} frames, {_bones.Length} joints)");
+            BvhClip solved = BvhClip.FromPoses(_skeleton, _locals, 1f / _rate, 0.01f);
+            OutputFiles.WriteText(_bvhFile, w => BvhWriter.Write(w, solved));
         }
-        if (_bvh != null)
-        {
-            BvhWriter.WriteFile(_bvh, BvhClip.FromPoses(_skeleton, _locals, 1f / _rate, 0.01f));
-            stdout.WriteLine($"solved avatar written to {_bvh} (centimetres, {_locals.Count} frames)");
-        }
-        if (_plot != null)
-        {
-            WritePlot(_plot);
-            stdout.WriteLine($"plot written to {_plot}");
-        }
+        if (_plotFile != null) WritePlot(_plotFile);
     }
 
-    private void WritePositions(string path)
+    /// <summary>Says where the outputs were written (after they were committed).</summary>
+    public void Report(TextWriter stdout)
     {
-        var inv = CultureInfo.InvariantCulture;
-        AtomicFileWriter.WriteText(path, w => WritePositions(w, inv));
+        if (!Recording || _bones == null) return;
+        if (_positions != null) stdout.WriteLine($"positions written to {_positions} ({_frames.Count} frames, {_bones.Length} joints)");
+        if (_bvh != null) stdout.WriteLine($"solved avatar written to {_bvh} (centimetres, {_locals.Count} frames)");
+        if (_plot != null) stdout.WriteLine($"plot written to {_plot}");
     }
 
     private void WritePositions(TextWriter w, CultureInfo inv)
@@ -137,7 +149,7 @@ internal sealed class EvaluationOutputs
         }
     }
 
-    private void WritePlot(string path)
+    private void WritePlot(AtomicFileWriter file)
     {
         double[] t = _times.ToArray();
         var multiplot = new Multiplot();
@@ -155,12 +167,13 @@ internal sealed class EvaluationOutputs
         flip.Color = Colors.Gray;
         bends.Add.HorizontalLine(-BendPlaneReport.FlippedDegrees).LinePattern = LinePattern.Dashed;
         foreach (Plot p in new[] { ends, mids, bends }) p.ShowLegend(Alignment.UpperRight);
-        // ScottPlot's multiplot only saves to a path: render to a scratch file, then replace OUT whole or not at all.
+        // ScottPlot's multiplot only saves to a path: render to a scratch file, then copy it into OUT's pending file.
         string scratch = Path.Combine(Path.GetTempPath(), "avatargo-plot-" + Guid.NewGuid().ToString("N") + ".png");
         try
         {
             multiplot.SavePng(scratch, 1600, 1200);
-            AtomicFileWriter.WriteAllBytes(path, File.ReadAllBytes(scratch));
+            byte[] png = File.ReadAllBytes(scratch);
+            file.Stream.Write(png, 0, png.Length);
         }
         finally { File.Delete(scratch); }
     }

@@ -50,6 +50,7 @@ public sealed class SimulateCommand : ICommand
         var options = Options(a);
         string mapPath = a.String("map");
         a.ThrowOnUnknown(0);
+        OutputFiles.RefuseClashes(new[] { ("--bvh", bvh), ("--map", mapPath) }, new[] { ("--out", output) });
         BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
         SessionSimulator simulator;
         string note = null;
@@ -115,6 +116,28 @@ public sealed class SimulateCommand : ICommand
             }
         }
         return true;
+    }
+
+    /// <summary>
+    /// Simulates into memory (demo's session, which no one keeps: a file under a fixed name in the shared temporary
+    /// folder replaced, then deleted, whatever was there). Null (with the reason on stderr) when the clip's skeleton
+    /// cannot be written as a session.
+    /// </summary>
+    internal static string SimulateToText(SessionSimulator simulator, TextWriter stderr, string command, Action<float> progress = null)
+    {
+        var text = new StringWriter();
+        SessionWriter writer;
+        try
+        {
+            writer = new SessionWriter(text, simulator.CreateHeader());
+        }
+        catch (ArgumentException e)
+        {
+            stderr.WriteLine($"avatargo {command}: the session cannot hold this clip's skeleton: {FirstLine(e)}");
+            return null;
+        }
+        using (writer) simulator.Run(writer, progress);
+        return text.ToString();
     }
 
     // The message of an ArgumentException without its "(Parameter 'x')" line.

@@ -1,0 +1,168 @@
+using System;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+
+namespace AvatarGo.Tools.Tests;
+
+/// <summary>
+/// What a run writes cannot cost what it read or wrote before (found in review): an output that is also an input, or two
+/// outputs that are one file, are refused before any work; evaluate's outputs are replaced together or not at all; a
+/// folder given as an input says so; demo leaves the shared temporary folder alone; evaluate says when it has nothing to
+/// compare; --positions' frame column is the frame's index whatever the session's clock.
+/// </summary>
+public class OutputClashTests
+{
+    private string _dir;
+
+    [SetUp]
+    public void MakeFolder()
+    {
+        _dir = Path.Combine(Path.GetTempPath(), "avatargo-clash-" + Guid.NewGuid().ToString("N"));
+        Directory.CreateDirectory(_dir);
+    }
+
+    [TearDown]
+    public void RemoveFolder()
+    {
+        if (Directory.Exists(_dir)) Directory.Delete(_dir, true);
+    }
+
+    private string Session(string name = "s.agsession")
+    {
+        string path = Path.Combine(_dir, name);
+        var r = CliRunner.Run("simulate", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--out", path, "--seed", "1");
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
+        return path;
+    }
+
+    private string Existing(string name)
+    {
+        string path = Path.Combine(_dir, name);
+        File.WriteAllText(path, "the previous " + name + "\n");
+        return path;
+    }
+
+    [Test]
+    public void AnOutputThatIsAnInputOrAnotherOutputIsRefused()
+    {
+        string session = Session();
+        byte[] before = File.ReadAllBytes(session);
+        string clip = Path.Combine(_dir, "clip.bvh");
+        File.Copy(Paths.Mocap("mocapbank_30fps.bvh"), clip);
+        string link = Path.Combine(_dir, "link.agsession");
+        File.CreateSymbolicLink(link, session);
+        string same = Path.Combine(_dir, "same");
+        var runs = new[]
+        {
+            new[] { "evaluate", session, "--hands", "calibrated", "--json", session },
+            new[] { "evaluate", session, "--hands", "calibrated", "--json", link },          // through a symbolic link
+            new[] { "evaluate", session, "--hands", "calibrated", "--positions", same, "--bvh-out", same },
+            new[] { "calibrate", session, "--save", session },
+            new[] { "simulate", "--bvh", clip, "--out", clip },
+            new[] { "demo", "--bvh", clip, "--out-bvh", clip },
+        };
+        foreach (string[] args in runs)
+        {
+            var r = CliRunner.Run(args);
+            Assert.That(r.ExitCode, Is.EqualTo(2), string.Join(" ", args) + "\n" + r);
+            StringAssert.Contains("is the same file as", r.Stderr);
+        }
+        Assert.That(File.ReadAllBytes(session), Is.EqualTo(before), "the session");
+        StringAssert.StartsWith("HIERARCHY", File.ReadAllText(clip), "the clip");
+        Assert.That(File.Exists(same), Is.False);
+        // A clip rebased in place is still allowed.
+        Assert.That(CliRunner.Run("bvh", "rebase", clip, clip, "--rest", "x-along").ExitCode, Is.EqualTo(0));
+    }
+
+    [Test]
+    public void AnEvaluationThatFailsOnItsLastOutputReplacesNoneOfTheOthers()
+    {
+        // The plot's folder does not exist: found before the evaluation now, and the JSON and the positions are kept.
+        string session = Session();
+        string json = Existing("old.json"), csv = Existing("old.csv");
+        var r = CliRunner.Run("evaluate", session, "--hands", "calibrated", "--json", json, "--positions", csv, "--plot", Path.Combine(_dir, "missing", "p.png"));
+        Assert.That(r.ExitCode, Is.EqualTo(1), r.ToString());
+        Assert.That(File.ReadAllText(json), Is.EqualTo("the previous old.json\n"));
+        Assert.That(File.ReadAllText(csv), Is.EqualTo("the previous old.csv\n"));
+        Assert.That(Directory.GetFiles(_dir).Select(Path.GetFileName).OrderBy(n => n), Is.EqualTo(new[] { "old.csv", "old.json", "s.agsession" }), "no temporary file left");
+        // And all of them when the run succeeds.
+        string png = Path.Combine(_dir, "p.png");
+        r = CliRunner.Run("evaluate", session, "--hands", "calibrated", "--json", json, "--positions", csv, "--plot", png);
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
+        StringAssert.StartsWith("{", File.ReadAllText(json));
+        StringAssert.StartsWith("frame,time,", File.ReadAllText(csv));
+        Assert.That(new FileInfo(png).Length, Is.GreaterThan(1000));
+    }
+
+    [Test]
+    public void ThePositionsFrameColumnIsTheFramesIndexWhateverTheClockStartsAt()
+    {
+        // A recording's frames are stamped with Unity's unscaled time, which does not start at 0: the column was
+        // round(time x rate), 90360 for frame 360.
+        string session = Session();
+        string shifted = Path.Combine(_dir, "shifted.agsession");
+        File.WriteAllLines(shifted, File.ReadAllLines(session).Select(l => l.StartsWith("frame ", StringComparison.Ordinal)
+            ? "frame " + (double.Parse(l.Substring(6), CultureInfo.InvariantCulture) + 1000).ToString("R", CultureInfo.InvariantCulture) : l));
+        string a = Path.Combine(_dir, "a.csv"), b = Path.Combine(_dir, "b.csv");
+        Assert.That(CliRunner.Run("evaluate", session, "--hands", "calibrated", "--positions", a).ExitCode, Is.EqualTo(0));
+        Assert.That(CliRunner.Run("evaluate", shifted, "--hands", "calibrated", "--positions", b).ExitCode, Is.EqualTo(0));
+        string[] First(string path) => File.ReadLines(path).Skip(1).Select(l => l.Split(',')[0]).Take(3).ToArray();
+        Assert.That(First(b), Is.EqualTo(First(a)));
+        int first = int.Parse(First(a)[0], CultureInfo.InvariantCulture);
+        Assert.That(First(a), Is.EqualTo(new[] { $"{first}", $"{first + 1}", $"{first + 2}" }), "consecutive indices");
+    }
+
+    [Test]
+    public void AFolderGivenAsAnInputSaysSo()
+    {
+        foreach (string[] args in new[]
+        {
+            new[] { "session", "info", _dir }, new[] { "evaluate", _dir }, new[] { "bvh", "info", _dir },
+            new[] { "simulate", "--bvh", _dir, "--out", Path.Combine(_dir, "x.agsession") },
+        })
+        {
+            var r = CliRunner.Run(args);
+            Assert.That(r.ExitCode, Is.EqualTo(1), string.Join(" ", args) + "\n" + r);
+            StringAssert.Contains("is a folder, not a file", r.Stderr);
+        }
+    }
+
+    [Test]
+    public void EvaluateWithNoTrueJointsInTheSessionSaysThereIsNothingToCompare()
+    {
+        // A session with its truth lines removed, as a headset records it, evaluated with --avatar: every figure was NaN
+        // with exit 0, and --json failed naming a serializer setting.
+        string session = Session();
+        string bare = Path.Combine(_dir, "bare.agsession");
+        File.WriteAllLines(bare, File.ReadAllLines(session).Where(l => !l.StartsWith("truth", StringComparison.Ordinal)));
+        string json = Existing("old.json");
+        var r = CliRunner.Run("evaluate", bare, "--hands", "calibrated", "--avatar", Paths.Mocap("mocapbank_30fps.bvh"), "--json", json);
+        Assert.That(r.ExitCode, Is.EqualTo(1), r.ToString());
+        StringAssert.Contains("nothing to compare", r.Stderr);
+        Assert.That(File.ReadAllText(json), Is.EqualTo("the previous old.json\n"));
+    }
+
+    [Test]
+    public void DemoLeavesAFileAtItsOldTemporaryNameAlone()
+    {
+        string victim = Path.Combine(Path.GetTempPath(), $"avatargo-demo-{Environment.ProcessId}.agsession");
+        File.WriteAllText(victim, "someone else's file\n");
+        try
+        {
+            var r = CliRunner.Run("demo");
+            Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
+            Assert.That(File.ReadAllText(victim), Is.EqualTo("someone else's file\n"));
+        }
+        finally { File.Delete(victim); }
+    }
+
+    [TestCase("--controller", "none"), TestCase("--exercise-seconds", "5")]
+    public void DemoRefusesTheSimulationOptionsItDoesNotHonour(string option, string value)
+    {
+        var r = CliRunner.Run("demo", option, value);
+        Assert.That(r.ExitCode, Is.EqualTo(2), r.ToString());
+        StringAssert.Contains(option, r.Stderr);
+    }
+}
