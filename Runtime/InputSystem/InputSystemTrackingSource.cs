@@ -104,17 +104,23 @@ namespace AvatarGo
 #endif
             for (int k = 0; k < ActionCount; k++)
             {
-                InputAction action = Property(k).action;
+                InputActionProperty property = Property(k);
+                InputAction action = property.action;
+                bool fromAsset = property.reference != null;
                 if (action == null || action.bindings.Count == 0)
                 {
                     action = CreateDefault(k);
                     _created[k] = true;
+                    fromAsset = false;
                 }
                 _actions[k] = action;
                 if (!action.enabled)
                 {
                     action.Enable();
-                    _enabledHere[k] = true;
+                    // An asset's action is shared (XRI's rig reads the same XRI Default Input Actions): enabled here if no
+                    // one had, but never disabled here, which froze the rig's controllers whenever this source was disabled
+                    // (Unity's TrackedPoseDriver and XRI manage only their own direct actions the same way).
+                    _enabledHere[k] = !fromAsset;
                 }
             }
         }

@@ -1,3 +1,4 @@
+using System;
 using AvatarGo.Core;
 using UnityEngine;
 using Valve.VR;
@@ -65,17 +66,48 @@ namespace AvatarGo
         {
             // GetPoseActionFromPath never returns null (an unknown path gives a placeholder that is never active), so the
             // path is checked first.
-            _pose = SteamVR_Input.HasActionPath(m_PoseAction) ? SteamVR_Input.GetPoseActionFromPath(m_PoseAction) : null;
-            if (_pose == null)
+            SteamVR_Action_Pose pose = null;
+            string wrongType = null;
+            try
             {
-                SetupErrors.Disable(this, "AvatarGo: the SteamVR Tracking Source found no pose action '" + m_PoseAction +
-                                          "' in the project's SteamVR actions (Window > SteamVR Input); it is disabled.");
+                pose = SteamVR_Input.HasActionPath(m_PoseAction) ? SteamVR_Input.GetPoseActionFromPath(m_PoseAction) : null;
+            }
+            catch (InvalidCastException)
+            {
+                wrongType = " is not a Pose action";
+            }
+            if (pose == null)
+            {
+                SetupErrors.Disable(this, "AvatarGo: the SteamVR Tracking Source's pose action '" + m_PoseAction + "'" +
+                                          (wrongType ?? " is not in the project's SteamVR actions") + " (Window > SteamVR Input); it is disabled.");
                 return false;
             }
-            _trigger = Known(m_TriggerAction) ? SteamVR_Input.GetSingleActionFromPath(m_TriggerAction) : null;
-            _triggerButton = Known(m_TriggerButtonAction) ? SteamVR_Input.GetBooleanActionFromPath(m_TriggerButtonAction) : null;
-            _grip = Known(m_GripAction) ? SteamVR_Input.GetBooleanActionFromPath(m_GripAction) : null;
+            // The optional actions before the pose is kept, so that a failure here leaves nothing half resolved.
+            SteamVR_Action_Single trigger = Typed(m_TriggerAction, "Single", SteamVR_Input.GetSingleActionFromPath);
+            SteamVR_Action_Boolean triggerButton = Typed(m_TriggerButtonAction, "Boolean", SteamVR_Input.GetBooleanActionFromPath);
+            SteamVR_Action_Boolean grip = Typed(m_GripAction, "Boolean", SteamVR_Input.GetBooleanActionFromPath);
+            _trigger = trigger;
+            _triggerButton = triggerButton;
+            _grip = grip;
+            _pose = pose;
             return true;
+        }
+
+        // An optional action of the type the field needs, or none (warned about). During play SteamVR hands out the action
+        // itself cast to the type asked for (SteamVR_Action.GetCopy: "(CreateType)this"), so an action of another type (a
+        // Boolean GrabPinch given as the trigger's Single) throws InvalidCastException; it stopped the whole calibrator.
+        private T Typed<T>(string path, string type, Func<string, bool, T> lookup) where T : class
+        {
+            if (!Known(path)) return null;
+            try
+            {
+                return lookup(path, false);
+            }
+            catch (InvalidCastException)
+            {
+                Debug.LogWarning("AvatarGo: the SteamVR Tracking Source's action '" + path + "' is not a " + type + " action; it is not read.", this);
+                return null;
+            }
         }
 
         // An optional action: none when no path is set; a path the project's actions lack is warned about (SteamVR would give

@@ -56,12 +56,16 @@ namespace AvatarGo.Core
                 deviceClass = DeviceClass.Hmd;
                 return true;
             }
+            // Before the controller test: Unity OpenXR's hand interaction profiles (Microsoft Hand Interaction, Palm Pose,
+            // Hand Common Poses) report tracked hands as HandTracking | HeldInHand | Controller | TrackedDevice: no
+            // controllers (a wearer who put the controllers down would have had four).
+            if (has(HandTracking)) return false;
             if (has(HeldInHand) && has(Controller))
             {
                 deviceClass = DeviceClass.Controller;
                 return true;
             }
-            if (has(HandTracking) || has(Camera) || !has(TrackedDevice)) return false;
+            if (has(Camera) || !has(TrackedDevice)) return false;
             runtimeRole = has(TrackerWaist) ? DeviceRole.Pelvis : has(TrackerLeftFoot) ? DeviceRole.LeftFoot : has(TrackerRightFoot) ? DeviceRole.RightFoot : DeviceRole.None;
             return true;
         }

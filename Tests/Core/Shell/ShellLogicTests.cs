@@ -23,6 +23,10 @@ namespace AvatarGo.Core.Tests
 
         [TestCase(XrDeviceKind.HeadMounted | XrDeviceKind.TrackedDevice, true, DeviceClass.Hmd, DeviceRole.None)]
         [TestCase(XrDeviceKind.HeldInHand | XrDeviceKind.Controller | XrDeviceKind.TrackedDevice | XrDeviceKind.Left, true, DeviceClass.Controller, DeviceRole.None)]
+        // Unity OpenXR's Microsoft Hand Interaction, Palm Pose and Hand Common Poses devices (com.unity.xr.openxr
+        // Runtime/Features/Interactions/MicrosoftHandInteraction.cs, PalmPoseInteraction.cs): hands, not controllers.
+        [TestCase(XrDeviceKind.HandTracking | XrDeviceKind.HeldInHand | XrDeviceKind.TrackedDevice | XrDeviceKind.Controller | XrDeviceKind.Left, false, DeviceClass.Tracker, DeviceRole.None)]
+        [TestCase(XrDeviceKind.HandTracking | XrDeviceKind.HeldInHand | XrDeviceKind.TrackedDevice | XrDeviceKind.Right, false, DeviceClass.Tracker, DeviceRole.None)]
         [TestCase(XrDeviceKind.TrackedDevice, true, DeviceClass.Tracker, DeviceRole.None)]
         [TestCase(XrDeviceKind.TrackedDevice | XrDeviceKind.TrackerWaist, true, DeviceClass.Tracker, DeviceRole.Pelvis)]
         [TestCase(XrDeviceKind.TrackedDevice | XrDeviceKind.TrackerLeftFoot, true, DeviceClass.Tracker, DeviceRole.LeftFoot)]

@@ -1,5 +1,5 @@
 // Compile-only Unity API surface (see Tools~/UnitySurface/README.md): only what the package uses, as Unity declares it.
-// Unity's InputActionProperty also has a constructor from an InputActionReference, reference, and equality members.
+// Unity's InputActionProperty also has a constructor from an InputActionReference, and equality members.
 
 namespace UnityEngine.InputSystem
 {
@@ -8,6 +8,8 @@ namespace UnityEngine.InputSystem
     public struct InputActionProperty
     {
         public InputAction action => throw null;
+
+        public InputActionReference reference => throw null;
 
         public InputActionProperty(InputAction action) => throw null;
     }

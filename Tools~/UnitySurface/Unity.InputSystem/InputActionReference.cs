@@ -1,0 +1,11 @@
+// Compile-only Unity API surface (see Tools~/UnitySurface/README.md): only what the package uses, as Unity declares it.
+// Unity's InputActionReference also has asset, Set, ToInputAction and Create members.
+
+namespace UnityEngine.InputSystem
+{
+    // com.unity.inputsystem@1.0.2 InputSystem/Actions/InputActionReference.cs
+    public class InputActionReference : ScriptableObject
+    {
+        public InputAction action => throw null;
+    }
+}
