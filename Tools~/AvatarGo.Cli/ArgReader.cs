@@ -28,8 +28,10 @@ public sealed class ArgReader
                 if (eq >= 0) { value = name.Substring(eq + 1); name = name.Substring(0, eq); }
                 else if (!flags.Contains(name))
                 {
-                    if (i + 1 >= args.Length) throw new UsageException($"option --{name} needs a value");
-                    value = args[++i];
+                    // No value (the last argument, or another option next): said when the command reads the option, so
+                    // that a misspelt flag is an unknown option and does not swallow the option after it.
+                    bool next = i + 1 < args.Length && !(args[i + 1].StartsWith("--", StringComparison.Ordinal) && args[i + 1].Length > 2);
+                    value = next ? args[++i] : null;
                 }
                 // The second of two values used to win silently (--frames 0:1 --frames 2:3 printed frame 2).
                 if (_options.ContainsKey(name)) throw new UsageException($"option --{name} is given twice");
@@ -56,7 +58,8 @@ public sealed class ArgReader
     public string String(string name, string fallback = null)
     {
         _read.Add(name);
-        return _options.TryGetValue(name, out string v) ? v : fallback;
+        if (!_options.TryGetValue(name, out string v)) return fallback;
+        return v ?? throw new UsageException($"option --{name} needs a value");
     }
 
     private const double MaxMagnitude = 1e12;
@@ -65,6 +68,7 @@ public sealed class ArgReader
     {
         _read.Add(name);
         if (!_options.TryGetValue(name, out string v)) return fallback;
+        if (v == null) throw new UsageException($"option --{name} needs a value");
         if (!double.TryParse(v, NumberStyles.Float, CultureInfo.InvariantCulture, out double d) || double.IsNaN(d) || double.IsInfinity(d))
             throw new UsageException($"--{name} expects a number, got '{v}'");
         // No option takes more than this (fuzz inputs up to a trillion; millimetres, degrees, seconds, rates); beyond a float's range a value
@@ -77,6 +81,7 @@ public sealed class ArgReader
     {
         _read.Add(name);
         if (!_options.TryGetValue(name, out string v)) return fallback;
+        if (v == null) throw new UsageException($"option --{name} needs a value");
         if (!int.TryParse(v, NumberStyles.Integer, CultureInfo.InvariantCulture, out int n))
             throw new UsageException($"--{name} expects an integer, got '{v}'");
         return n;

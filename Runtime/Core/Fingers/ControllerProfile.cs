@@ -26,7 +26,7 @@ namespace AvatarGo.Core
         /// <summary>The longest profile text read, in characters (64 KiB; the bundled profiles are under 1 KB).</summary>
         public const int MaxFileLength = 64 << 10;
 
-        /// <summary>The most shapes a profile may have (the bundled ones have two to four; each costs time in every finger solve).</summary>
+        /// <summary>The most shapes a profile may have (the bundled ones have two; each costs time in every finger solve).</summary>
         public const int MaxShapes = 64;
 
         /// <summary>The largest coordinate, radius or half extent, in metres: a controller is a hand-sized object.</summary>

@@ -30,7 +30,7 @@ namespace AvatarGo.Core
             set => Values[ThumbSpreadIndex] = value;
         }
 
-        /// <summary>Every parameter 0: the open hand (the rig's rest pose).</summary>
+        /// <summary>Every parameter 0: the open hand, the pose the hand model was built from (in the pipeline the calibration T-pose's relaxed fingers).</summary>
         public void Clear() => Array.Clear(Values, 0, Count);
 
         /// <summary>Copies every parameter of <paramref name="other"/>.</summary>

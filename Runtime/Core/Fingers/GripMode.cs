@@ -6,7 +6,7 @@ namespace AvatarGo.Core
         /// <summary>All fingers closed on the controller; thumb on its rest, index on the trigger.</summary>
         Hold = 0,
 
-        /// <summary>All fingers open (the rig's rest pose).</summary>
+        /// <summary>All fingers open: the pose the hand model was built from (in the pipeline the calibration T-pose's relaxed fingers).</summary>
         Open = 1,
 
         /// <summary>Index finger pointing, the others holding.</summary>

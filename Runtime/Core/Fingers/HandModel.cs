@@ -260,8 +260,8 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// Where a controller sits in the hand joint's frame when held: its handle axis (+Y) across the palm toward
-        /// the index, its trigger side (+Z) away from the palm, its origin one handle radius plus a finger radius
-        /// off the palm centre — the palm centre on the grip (<see cref="GripPose"/>).
+        /// the index, its trigger side (+Z) away from the palm, its origin one handle radius plus 2 mm off the palm centre
+        /// (the palm centre is on the skin already) — the palm centre on the grip (<see cref="GripPose"/>).
         /// </summary>
         public RigidPose ControllerInHand(ControllerProfile profile)
         {

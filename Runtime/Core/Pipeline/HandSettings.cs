@@ -5,7 +5,7 @@ namespace AvatarGo.Core
     {
         /// <summary>
         /// The controller held in this hand, whose surface the fingers close on; null for no finger IK (the fingers keep
-        /// the avatar's rest pose). An avatar without finger bones has no finger IK either (<see cref="HandModel.CanModel(HumanoidMap, BodySide, SkeletonPose, out string)"/>).
+        /// the calibration T-pose's: side by side, relaxed). An avatar without finger bones has no finger IK either (<see cref="HandModel.CanModel(HumanoidMap, BodySide, SkeletonPose, out string)"/>).
         /// </summary>
         public ControllerProfile Controller { get; set; }
 

@@ -40,6 +40,20 @@ public class ArgumentRangeTests
         StringAssert.Contains("twice", r.Stderr);
     }
 
+    [Test]
+    public void AMisspeltFlagIsAnUnknownOptionAndTakesNoOtherOptionAsItsValue()
+    {
+        // "--jsn" at the end was "needs a value", and before another option it swallowed that option as its value.
+        string session = Path.Combine(_dir, "missing.agsession");
+        var last = CliRunner.Run("calibrate", session, "--jsn");
+        AssertBadArgument(last, "unknown option --jsn");
+        var before = CliRunner.Run("calibrate", session, "--jsn", "--save", Path.Combine(_dir, "p.json"));
+        AssertBadArgument(before, "unknown option --jsn");
+        // A known option without its value still says so.
+        AssertBadArgument(CliRunner.Run("calibrate", session, "--save"), "option --save needs a value");
+        AssertBadArgument(CliRunner.Run("bvh", "positions", Paths.Mocap("mocapbank_30fps.bvh"), "--scale", "--frames", "0:1"), "option --scale needs a value");
+    }
+
     // Beyond what a session holds (positions within 10 km) the writer refused a device's pose: exit 1, on some seeds.
     [TestCase("--noise-mm", "1e7")]
     [TestCase("--noise-deg", "1e12")]
