@@ -31,7 +31,7 @@ public sealed class BenchCommand : ICommand
         controllers, both hands' finger IK) as the headline case; the body alone (the same pipeline
         without finger IK); both hands' fingers alone (FingerSolver on the poses the pipeline produced,
         where a hand that follows its controller keeps its grip without a descent), and again with each
-        wrist moved 25 micrometres in its controller every other frame, so that every frame descends (the
+        wrist moved 2.5 micrometres in its controller every other frame, so that every frame descends (the
         worst case: a hand sliding in its controller, an arm out of reach); and the body's two stages (devices -> targets, targets -> posed skeleton). Reports nanoseconds per
         frame (median over N runs, with min and max), bytes allocated per frame on this thread (must be 0),
         how many avatars one core could solve in a 90 Hz frame, and the machine. Run it in Release:
