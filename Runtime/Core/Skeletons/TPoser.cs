@@ -22,9 +22,10 @@ namespace AvatarGo.Core
     /// that are no humanoid bone (UE5's spine_02) stand up with them. The twist about such a bone is not given by any landmark: it is the smallest turn from
     /// <c>twistReference</c> (the rest pose unless another pose is given), and nothing in the core depends on it (the
     /// solver bends limbs from positions; tested by rewriting clips in random local axes).</para>
-    /// <para>Fallbacks where a landmark is missing: hips whose spine starts on the hip line keep the reference pitch; a
-    /// chest whose clavicles start at one point (Rigify) keeps the reference twist; a head without eyes stands its crown
-    /// up (its one child besides the jaw, a leaf at least half as far from it as it is from the neck) and keeps the
+    /// <para>Fallbacks where a landmark is missing: hips whose spine starts on the middle of the hip line stand up toward
+    /// the first joint on the way to the head off it; a chest whose clavicles start at one point (Rigify) keeps the
+    /// reference twist; a head without eyes stands its crown up (its one child besides the jaw, a leaf ending the head by
+    /// being an End Site or by its name, at least half as far from it as it is from the neck) and keeps the
     /// reference twist about it, and without that crown keeps the reference rotation relative to the neck; a spine joint
     /// aims at the next joint toward the head that does not sit on it; a hand without
     /// finger bases points along its child (or keeps the reference rotation when it has none, as an end site); a foot
@@ -225,7 +226,15 @@ namespace AvatarGo.Core
                     // only stand the spine up (the thighs' line here would move with that bone's turn still to come).
                     if (HumanoidParent(map, l) != j || HumanoidParent(map, r) != j) return Turn(pose, j, At(pose, spine) - At(pose, j), Vector3.UnitY);
                     Vector3 mid = (At(pose, l) + At(pose, r)) * 0.5f;
-                    return Turn(pose, j, At(pose, r) - At(pose, l), Vector3.UnitX, At(pose, spine) - mid, Vector3.UnitY);
+                    // Up toward the first joint on the way to the head off the hip line's middle: Rigify's spine starts
+                    // there, and its hips kept the reference's pitch (a simulated wearer's first frame: a clip that starts
+                    // lying down calibrated its pelvis tracker turned 90 degrees).
+                    int up = spine;
+                    float reach = Vector3.Distance(mid, At(pose, map[HumanoidBone.Head]));
+                    while (up >= 0 && up != map[HumanoidBone.Head] && Vector3.Distance(At(pose, up), mid) <= 1e-3f * reach)
+                        up = ChildToward(pose.Skeleton, up, map[HumanoidBone.Head]);
+                    if (up < 0) up = spine;
+                    return Turn(pose, j, At(pose, r) - At(pose, l), Vector3.UnitX, At(pose, up) - mid, Vector3.UnitY);
                 }
                 case BoneRole.Spine:
                 {
@@ -421,10 +430,12 @@ namespace AvatarGo.Core
         // about 20 degrees of it; ears and the back of the skull lie beyond 50.
         private const float CrownConeDegrees = 40f;
 
-        // The crown of a head without eyes, where nothing says which way the head faces: its one child besides the jaw, when
-        // that is a leaf (an End Site, a joint with nothing below it: hair and other chains are not) at least half as far
-        // from the head as the head from its humanoid parent (a skull's height against its neck's; Rigify's 3 cm face End
-        // Site, pointing forward, is not a crown), else -1 (the head keeps its reference rotation).
+        // The crown of a head without eyes, where nothing in the skeleton's geometry says which way the head faces (a lone
+        // child's direction is the rest convention's): its one child besides the jaw, when that is a leaf (hair and other
+        // chains are not) that ends the head (a BVH End Site, or named as a head top: top, end, nub, tip, crown) and is
+        // named like nothing on the face, at least half as far from the head as the head is from its humanoid parent (a
+        // skull's height against its neck's: Rigify's 3 cm face End Site is not a crown), else -1 (the head keeps its
+        // reference rotation). A nose taken for the crown tipped the face 73 degrees up.
         private static int CrownWithoutEyes(HumanoidMap map, SkeletonPose pose, int head)
         {
             Skeleton s = map.Skeleton;
@@ -439,8 +450,21 @@ namespace AvatarGo.Core
             if (crown < 0) return -1;
             for (int c = crown + 1; c < s.JointCount; c++)
                 if (s.GetParent(c) == crown) return -1;
+            string name = s.GetName(crown).ToLowerInvariant();
+            if (!s.IsEndSite(crown) && !ContainsAny(name, HeadTopWords)) return -1;
+            if (ContainsAny(name, FaceWords)) return -1;
             float neck = Vector3.Distance(At(pose, head), At(pose, below));
             return s.GetRestLocal(crown).Position.Length() >= 0.5f * neck ? crown : -1;
+        }
+
+        private static readonly string[] HeadTopWords = { "top", "end", "nub", "tip", "crown" };
+        private static readonly string[] FaceWords = { "face", "nose", "jaw", "chin", "mouth", "eye", "ear", "hair", "tongue", "teeth", "brow", "lip", "cheek" };
+
+        private static bool ContainsAny(string name, string[] words)
+        {
+            foreach (string word in words)
+                if (name.Contains(word)) return true;
+            return false;
         }
 
         private static bool IsEyeOrJaw(HumanoidMap map, int joint)

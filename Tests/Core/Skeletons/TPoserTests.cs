@@ -200,5 +200,40 @@ namespace AvatarGo.Core.Tests
             Vector3 up = withTop.World[headTop].Position - withTop.World[originalMap[HumanoidBone.Head]].Position;
             Assert.That(Vectors.AngleDegrees(up, Vector3.UnitY), Is.LessThan(0.01), "HeadTop_End is the crown");
         }
+
+        [Test]
+        public void HipsWhoseSpineStartsOnTheHipLineStandUpByTheSpineNotTheReference()
+        {
+            // Rigify's spine joint sits on the middle of its hip line, so the hips' pitch came from the reference: a clip
+            // whose first frame lies down calibrated its pelvis tracker turned 90 degrees (MPJPE 17.4 against 11.0 mm).
+            BvhClip clip = Read("rigify_6channel_24fps_first240.bvh");
+            HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
+            int hips = map[HumanoidBone.Hips];
+            Vector3 mid = (clip.Skeleton.GetRestLocal(map[HumanoidBone.LeftUpperLeg]).Position + clip.Skeleton.GetRestLocal(map[HumanoidBone.RightUpperLeg]).Position) * 0.5f;
+            Assert.That(Vector3.Distance(clip.Skeleton.GetRestLocal(map[HumanoidBone.Spine]).Position, mid), Is.LessThan(1e-4f), "the spine starts on the hip line");
+            RigidPose[] upright = FirstFrame(clip), lying = FirstFrame(clip);
+            lying[hips] = new RigidPose(lying[hips].Position, Rotations.AngleAxis(90f, Vector3.UnitX) * lying[hips].Rotation);
+            SkeletonPose a = TPose(map, upright), b = TPose(map, lying);
+            Assert.That(Rotations.AngleDegrees(a.World[hips].Rotation, b.World[hips].Rotation), Is.LessThan(0.01));
+            Assert.That(ReferenceSpreadMm(clip, map), Is.LessThan(1.0), "every humanoid joint where it is from the rest and from the first frame");
+        }
+
+        [Test]
+        public void ANoseIsNotACrown()
+        {
+            // A lone leaf at the face, 10 cm ahead of MocapBank's head joint and longer than half its neck, in place of its
+            // End Site: stood up as a crown, it tipped the face 73 degrees up. It is named as part of the face: no crown, and
+            // the head keeps its reference rotation.
+            BvhClip original = Read("mocapbank_30fps.bvh");
+            int head = original.Skeleton.IndexOf("Head"), end = -1;
+            for (int j = 0; j < original.Skeleton.JointCount; j++)
+                if (original.Skeleton.GetParent(j) == head) end = j;
+            BvhClip clip = Topology.WithLeaves(Topology.Without(original, end), ("Head", "Nose", new Vector3(0f, 0.03f, 0.10f)));
+            HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
+            SkeletonPose pose = TPose(map, null);
+            int nose = clip.Skeleton.IndexOf("Nose");
+            Vector3 ahead = pose.World[nose].Position - pose.World[map[HumanoidBone.Head]].Position;
+            Assert.That(Vectors.AngleDegrees(ahead, Vector3.UnitY), Is.GreaterThan(45f), "the nose is not straight up");
+        }
 }
 }
