@@ -42,7 +42,7 @@ public sealed class BvhInfoCommand : ICommand
         stdout.WriteLine(string.Create(inv, $"rate: {clip.FrameRate:0.###} Hz (frame time {clip.FrameTime:0.######} s), duration {clip.FrameCount * clip.FrameTime:0.###} s"));
         string unitName = unit == 1f ? "metres" : unit == 0.01f ? "centimetres" : unit == 0.001f ? "millimetres" : unit == 0.0254f ? "inches"
             : string.Create(inv, $"{unit:0.######} m (the CMU database's BVH unit)");
-        stdout.WriteLine($"units: {unitName} (guessed from the longest chain of bones)");
+        stdout.WriteLine($"units: {unitName} (guessed from the longest chain of bones; simulate and demo take --units when it is another)");
         stdout.WriteLine($"joints: {s.Names.Count(n => !s.IsEndSite(s.IndexOf(n)))} (+{s.Names.Count(n => s.IsEndSite(s.IndexOf(n)))} end sites), channels per frame: {clip.ChannelCount}");
         for (int j = 0; j < s.JointCount; j++)
         {

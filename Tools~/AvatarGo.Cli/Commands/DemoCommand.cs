@@ -22,7 +22,7 @@ public sealed class DemoCommand : ICommand
           --bvh FILE       the clip to use
           --out-bvh FILE   also write the solved avatar (exact offsets) as BVH, to look at in Blender/Unity
           --seed N, --noise-mm MM, --noise-deg DEG, --misalign-mm MM, --misalign-deg DEG, --rate HZ,
-          --map FILE, --keep-up, --keep-sides
+          --map FILE, --keep-up, --keep-sides, --units U
                            as for 'avatargo simulate'
         """;
 
@@ -37,10 +37,11 @@ public sealed class DemoCommand : ICommand
         // and it scores every frame after calibration (an exercise would be scored).
         foreach (string option in new[] { "controller", "exercise-seconds" })
             if (a.String(option) != null) throw new UsageException($"demo does not take --{option} (simulate and evaluate do)");
+        BvhReadOptions read = SimulateCommand.ReadOptions(a);
         a.ThrowOnUnknown(0);
         OutputFiles.RefuseClashes(new[] { ("--bvh", bvh), ("--map", mapPath) }, new[] { ("--out-bvh", outBvh) });
 
-        BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
+        BvhClip clip = BvhReader.ReadFile(bvh, read);
         SessionSimulator simulator;
         string note = null;
         HumanoidMap map = null;

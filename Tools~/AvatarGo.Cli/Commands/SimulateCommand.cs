@@ -36,6 +36,10 @@ public sealed class SimulateCommand : ICommand
                               axis up (a Z-up export) is stood up first, and the command says so
           --map FILE          the humanoid bones of joints the naming rules miss: 'joint name = Bone' lines
                               (LeftUpperArm, Hips, ...; # comments); the others are found from their names
+          --units U           the clip's length unit: auto (default: guessed from the longest chain of bones,
+                              'bvh info' says which), m, cm, mm, in, or cmu (the CMU database's BVH unit,
+                              0.0254/0.45 m); a chain of 60 to 94 units is a person in centimetres and in inches
+                              alike, and the guess takes centimetres
           --keep-sides        simulate the clip as it is even if its knees bend backward; by default such a clip
                               (a left-handed export, or its sides named the wrong way round) is mirrored left to
                               right first, and the command says so
@@ -49,9 +53,10 @@ public sealed class SimulateCommand : ICommand
         string output = a.String("out") ?? throw new UsageException("missing --out SESSION");
         var options = Options(a);
         string mapPath = a.String("map");
+        BvhReadOptions read = ReadOptions(a);
         a.ThrowOnUnknown(0);
         OutputFiles.RefuseClashes(new[] { ("--bvh", bvh), ("--map", mapPath) }, new[] { ("--out", output) });
-        BvhClip clip = BvhReader.ReadFile(bvh, new BvhReadOptions { ToMetres = true });
+        BvhClip clip = BvhReader.ReadFile(bvh, read);
         SessionSimulator simulator;
         string note = null;
         HumanoidMap map = null;
@@ -146,6 +151,26 @@ public sealed class SimulateCommand : ICommand
         string m = e.Message;
         int parameter = m.IndexOf(" (Parameter '", StringComparison.Ordinal);
         return (parameter >= 0 ? m.Substring(0, parameter) : m).Split('\n')[0].TrimEnd('\r');
+    }
+
+    /// <summary>
+    /// How simulate and demo read the clip (--units): in metres, the unit guessed (auto) or given. Read it before
+    /// <see cref="ArgReader.ThrowOnUnknown"/>.
+    /// </summary>
+    internal static BvhReadOptions ReadOptions(ArgReader a)
+    {
+        string units = a.String("units", "auto");
+        float metres = units switch
+        {
+            "auto" => float.NaN,
+            "m" => 1f,
+            "cm" => 0.01f,
+            "mm" => 0.001f,
+            "in" => 0.0254f,
+            "cmu" => 0.0254f / 0.45f,
+            string other => throw new UsageException($"--units must be auto, m, cm, mm, in or cmu, got '{other}'"),
+        };
+        return float.IsNaN(metres) ? new BvhReadOptions { ToMetres = true } : new BvhReadOptions { Scale = metres };
     }
 
     /// <summary>The options of <see cref="Options"/> that take no value: an ArgReader must be told them.</summary>

@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 using NUnit.Framework;
 
 namespace AvatarGo.Tools.Tests;
@@ -52,6 +53,49 @@ public class ArgumentRangeTests
         // A known option without its value still says so.
         AssertBadArgument(CliRunner.Run("calibrate", session, "--save"), "option --save needs a value");
         AssertBadArgument(CliRunner.Run("bvh", "positions", Paths.Mocap("mocapbank_30fps.bvh"), "--scale", "--frames", "0:1"), "option --scale needs a value");
+    }
+
+    [Test]
+    public void AClipInInchesThatReadsAsCentimetresIsReadRightWithUnits()
+    {
+        // MocapBank scaled to a 2.3 m person and written in inches: its longest chain, 65 units, is a person in
+        // centimetres too, and the guess takes centimetres (a 0.9 m wearer). --units in reads it right.
+        string text = File.ReadAllText(Paths.Mocap("mocapbank_30fps.bvh"));
+        // Only the lengths scale: the OFFSET lines and the root's three position channels.
+        var lines = text.Split('\n');
+        bool motion = false;
+        for (int i = 0; i < lines.Length; i++)
+        {
+            string l = lines[i];
+            if (l.StartsWith("MOTION", StringComparison.Ordinal)) motion = true;
+            string t = l.TrimStart();
+            if (!motion && t.StartsWith("OFFSET", StringComparison.Ordinal)) lines[i] = "OFFSET " + string.Join(" ", t.Substring(6).Split(' ', StringSplitOptions.RemoveEmptyEntries).Select(Scale));
+            else if (motion && t.Length > 0 && (char.IsDigit(t[0]) || t[0] == '-') && !t.StartsWith("Frame", StringComparison.Ordinal))
+            {
+                string[] v = t.Split(' ', StringSplitOptions.RemoveEmptyEntries);
+                for (int k = 0; k < 3 && k < v.Length; k++) v[k] = Scale(v[k]); // the root's Xposition Yposition Zposition
+                lines[i] = string.Join(" ", v);
+            }
+        }
+        static string Scale(string v) => (double.Parse(v, System.Globalization.CultureInfo.InvariantCulture) * 1.42 / 2.54).ToString("R", System.Globalization.CultureInfo.InvariantCulture);
+        string clip = Path.Combine(_dir, "giant-inches.bvh");
+        File.WriteAllText(clip, string.Join("\n", lines));
+        string guessed = Path.Combine(_dir, "guessed.agsession"), given = Path.Combine(_dir, "given.agsession");
+        Assert.That(CliRunner.Run("simulate", "--bvh", clip, "--out", guessed).ExitCode, Is.EqualTo(0));
+        var r = CliRunner.Run("simulate", "--bvh", clip, "--out", given, "--units", "in");
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
+        double Height(string session) => double.Parse(System.Text.RegularExpressions.Regex.Match(CliRunner.Run("calibrate", session).Stdout, @"wearer eye height ([0-9.]+) m").Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);
+        Assert.That(Height(guessed), Is.LessThan(1.2), "read as centimetres: a small person");
+        // The eye height measured from the headset scales with the body but for the device's own offsets: within 3 %.
+        Assert.That(Height(given), Is.EqualTo(1.42 * Height(Session("plain"))).Within(0.03 * 1.42 * 1.575), "read as inches: the giant");
+        AssertBadArgument(CliRunner.Run("simulate", "--bvh", clip, "--out", given, "--units", "furlongs"), "--units");
+    }
+
+    private string Session(string name)
+    {
+        string path = Path.Combine(_dir, name + ".agsession");
+        Assert.That(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--out", path).ExitCode, Is.EqualTo(0));
+        return path;
     }
 
     // Beyond what a session holds (positions within 10 km) the writer refused a device's pose: exit 1, on some seeds.
