@@ -221,20 +221,14 @@ namespace AvatarGo.Core
             {
                 case BoneRole.Hips:
                 {
-                    int l = map[HumanoidBone.LeftUpperLeg], r = map[HumanoidBone.RightUpperLeg], spine = map[HumanoidBone.Spine];
+                    int l = map[HumanoidBone.LeftUpperLeg], r = map[HumanoidBone.RightUpperLeg];
                     // 3ds Max Biped hangs the thighs from its first spine bone, which levels them (Spine, below): the hips
                     // only stand the spine up (the thighs' line here would move with that bone's turn still to come).
-                    if (HumanoidParent(map, l) != j || HumanoidParent(map, r) != j) return Turn(pose, j, At(pose, spine) - At(pose, j), Vector3.UnitY);
+                    // (Up toward the spine joint itself: past it, toward the next, a Rigify so rewritten lost its feet, end
+                    // effectors p95 4 -> 18 mm, the spine joint's turn still to come.)
+                    if (HumanoidParent(map, l) != j || HumanoidParent(map, r) != j) return Turn(pose, j, At(pose, map[HumanoidBone.Spine]) - At(pose, j), Vector3.UnitY);
                     Vector3 mid = (At(pose, l) + At(pose, r)) * 0.5f;
-                    // Up toward the first joint on the way to the head off the hip line's middle: Rigify's spine starts
-                    // there, and its hips kept the reference's pitch (a simulated wearer's first frame: a clip that starts
-                    // lying down calibrated its pelvis tracker turned 90 degrees).
-                    int up = spine;
-                    float reach = Vector3.Distance(mid, At(pose, map[HumanoidBone.Head]));
-                    while (up >= 0 && up != map[HumanoidBone.Head] && Vector3.Distance(At(pose, up), mid) <= 1e-3f * reach)
-                        up = ChildToward(pose.Skeleton, up, map[HumanoidBone.Head]);
-                    if (up < 0) up = spine;
-                    return Turn(pose, j, At(pose, r) - At(pose, l), Vector3.UnitX, At(pose, up) - mid, Vector3.UnitY);
+                    return Turn(pose, j, At(pose, r) - At(pose, l), Vector3.UnitX, At(pose, UpFrom(map, pose, mid)) - mid, Vector3.UnitY);
                 }
                 case BoneRole.Spine:
                 {
@@ -357,6 +351,19 @@ namespace AvatarGo.Core
             while (next >= 0 && next != head && Vector3.Distance(At(pose, next), At(pose, j)) <= 1e-3f * reach)
                 next = ChildToward(s, next, head);
             return next;
+        }
+
+        // The hips' way up from `from` (the hip line's middle, or the hips joint): the spine joint, or, when it sits there
+        // (Rigify's starts on the middle of the hip line), the first joint on the way to the head off it. Up toward a joint
+        // at `from` gave no direction, and the hips kept the reference's pitch (a simulated wearer's first frame: a clip
+        // that starts lying down calibrated its pelvis tracker turned 90 degrees).
+        private static int UpFrom(HumanoidMap map, SkeletonPose pose, Vector3 from)
+        {
+            int spine = map[HumanoidBone.Spine], head = map[HumanoidBone.Head], up = spine;
+            float reach = Vector3.Distance(from, At(pose, head));
+            while (up >= 0 && up != head && Vector3.Distance(At(pose, up), from) <= 1e-3f * reach)
+                up = ChildToward(pose.Skeleton, up, head);
+            return up < 0 ? spine : up;
         }
 
         // The child of `joint` that `descendant` hangs from (or is), or -1.

@@ -336,12 +336,12 @@ namespace AvatarGo.Core.Tests
             return (own, other, what, moved);
         }
 
-        private static void AssertThighsUnderTheSpineKeepTheEndEffectors(string path, int seed, double endEffectorP95Mm)
+        private static void AssertThighsUnderTheSpineKeepTheEndEffectors(string path, int seed, double endEffectorP95Mm, double mpjpeMarginMm = 6.5)
         {
             var (own, other, what, _) = EvaluateMovedUnder(path, seed, HumanoidBone.LeftUpperLeg, HumanoidBone.RightUpperLeg, HumanoidBone.Spine, "thighs under the first spine joint");
             Assert.That(other.EndEffectorMm.Median, Is.EqualTo(own.EndEffectorMm.Median).Within(0.3), $"{what}: end-effector median (mm)");
             Assert.That(other.EndEffectorMm.P95, Is.LessThanOrEqualTo(endEffectorP95Mm), $"{what}: end-effector p95 (mm)");
-            Assert.That(other.AllJointsMm.Mean, Is.LessThanOrEqualTo(own.AllJointsMm.Mean + 6.5), $"{what}: MPJPE (mm)");
+            Assert.That(other.AllJointsMm.Mean, Is.LessThanOrEqualTo(own.AllJointsMm.Mean + mpjpeMarginMm), $"{what}: MPJPE (mm)");
         }
 
         /// <summary>
@@ -423,8 +423,10 @@ namespace AvatarGo.Core.Tests
             }
             foreach (string which in Dropped) AssertDroppedBonesStillWork(path, which, 1);
             AssertClaviclesUnderTheNeckChangeLittle(path, 1);
-            // Rigify's legs, near full stretch, miss their feet when the bend lifts the thighs: measured p95 11.6 mm.
-            AssertThighsUnderTheSpineKeepTheEndEffectors(path, 1, 15.0);
+            // Rigify's legs, near full stretch, miss their feet when the bend lifts the thighs: measured p95 11.6 mm. Its
+            // original now stands its hips up by the spine (15.3 -> 13.1 mm), which the hips of this variant, standing only
+            // the spine up, do not (20.4 mm before and after): 7.5 mm apart.
+            AssertThighsUnderTheSpineKeepTheEndEffectors(path, 1, 15.0, file.StartsWith("rigify", StringComparison.Ordinal) ? 7.5 : 6.5);
         }
     }
 }
