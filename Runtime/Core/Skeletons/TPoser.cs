@@ -439,8 +439,8 @@ namespace AvatarGo.Core
 
         // The crown of a head without eyes, where nothing in the skeleton's geometry says which way the head faces (a lone
         // child's direction is the rest convention's): its one child besides the jaw, when that is a leaf (hair and other
-        // chains are not) that ends the head (a BVH End Site, or named as a head top: top, end, nub, tip, crown) and is
-        // named like nothing on the face, at least half as far from the head as the head is from its humanoid parent (a
+        // chains are not) that ends the head (a BVH End Site, or a joint named as a head top: top, end, nub, tip, crown,
+        // and like nothing on the face), at least half as far from the head as the head is from its humanoid parent (a
         // skull's height against its neck's: Rigify's 3 cm face End Site is not a crown), else -1 (the head keeps its
         // reference rotation). A nose taken for the crown tipped the face 73 degrees up.
         private static int CrownWithoutEyes(HumanoidMap map, SkeletonPose pose, int head)
@@ -457,9 +457,11 @@ namespace AvatarGo.Core
             if (crown < 0) return -1;
             for (int c = crown + 1; c < s.JointCount; c++)
                 if (s.GetParent(c) == crown) return -1;
-            string name = s.GetName(crown).ToLowerInvariant();
-            if (!s.IsEndSite(crown) && !ContainsAny(name, HeadTopWords)) return -1;
-            if (ContainsAny(name, FaceWords)) return -1;
+            // The name without its namespace ("Clip:", "Bear:" and "Machine:" hold face words). An End Site's name is only its
+            // parent's (the head's) with "_End": nothing to read in it, its length decides.
+            string name = s.GetName(crown);
+            name = name.Substring(name.LastIndexOf(':') + 1).ToLowerInvariant();
+            if (!s.IsEndSite(crown) && (!ContainsAny(name, HeadTopWords) || ContainsAny(name, FaceWords))) return -1;
             float neck = Vector3.Distance(At(pose, head), At(pose, below));
             return s.GetRestLocal(crown).Position.Length() >= 0.5f * neck ? crown : -1;
         }

@@ -235,5 +235,23 @@ namespace AvatarGo.Core.Tests
             Vector3 ahead = pose.World[nose].Position - pose.World[map[HumanoidBone.Head]].Position;
             Assert.That(Vectors.AngleDegrees(ahead, Vector3.UnitY), Is.GreaterThan(45f), "the nose is not straight up");
         }
+
+        [TestCase("")]
+        [TestCase("Clip:")]
+        [TestCase("Bear:")]
+        [TestCase("Machine:")]
+        public void TheCrownDoesNotDependOnTheRigsNamespace(string prefix)
+        {
+            // Namespaces that hold a face word ("lip", "ear", "chin") made the End Site at the crown no crown: the head kept
+            // its rest rotation, the crown 21 degrees from up.
+            string text = System.IO.File.ReadAllText(TestData.Mocap("mocapbank_30fps.bvh")).Replace("ROOT ", "ROOT " + prefix).Replace("JOINT ", "JOINT " + prefix);
+            BvhClip clip = BvhReader.Read(new System.IO.StringReader(text), "prefixed.bvh", new BvhReadOptions { ToMetres = true });
+            HumanoidMap map = HumanoidNaming.Detect(clip.Skeleton);
+            int head = map[HumanoidBone.Head], crown = -1;
+            for (int j = 0; j < clip.Skeleton.JointCount; j++)
+                if (clip.Skeleton.GetParent(j) == head) crown = j;
+            SkeletonPose pose = TPose(map, null);
+            Assert.That(Vectors.AngleDegrees(pose.World[crown].Position - pose.World[head].Position, Vector3.UnitY), Is.LessThan(0.01));
+        }
 }
 }

@@ -31,12 +31,12 @@ public sealed class DemoCommand : ICommand
         var a = new ArgReader(args, SimulateCommand.OptionFlags);
         string bvh = a.String("bvh") ?? DemoCommandPaths.BundledClip();
         string outBvh = a.String("out-bvh");
-        SimulationOptions options = SimulateCommand.Options(a);
-        string mapPath = a.String("map");
         // Read by the simulation options, not demo's: its figures are those of evaluate's defaults without a controller,
         // and it scores every frame after calibration (an exercise would be scored).
         foreach (string option in new[] { "controller", "exercise-seconds" })
             if (a.String(option) != null) throw new UsageException($"demo does not take --{option} (simulate and evaluate do)");
+        SimulationOptions options = SimulateCommand.Options(a);
+        string mapPath = a.String("map");
         BvhReadOptions read = SimulateCommand.ReadOptions(a);
         a.ThrowOnUnknown(0);
         OutputFiles.RefuseClashes(new[] { ("--bvh", bvh), ("--map", mapPath) }, new[] { ("--out-bvh", outBvh) });
