@@ -342,16 +342,8 @@ namespace AvatarGo.Core
         // The first joint after j on the way to the head that does not sit on j (a joint at j's place, two joints at one
         // place, gives no direction: taken as the next one, it left the chest in its reference rotation, the shoulders
         // 54 mm apart between two references), or -1 off that way.
-        private static int NextTowardHead(HumanoidMap map, SkeletonPose pose, int j)
-        {
-            Skeleton s = pose.Skeleton;
-            int head = map[HumanoidBone.Head];
-            float reach = Vector3.Distance(At(pose, j), At(pose, head));
-            int next = ChildToward(s, j, head);
-            while (next >= 0 && next != head && Vector3.Distance(At(pose, next), At(pose, j)) <= 1e-3f * reach)
-                next = ChildToward(s, next, head);
-            return next;
-        }
+        private static int NextTowardHead(HumanoidMap map, SkeletonPose pose, int j) =>
+            FirstOffTowardHead(map, pose, ChildToward(pose.Skeleton, j, map[HumanoidBone.Head]), At(pose, j));
 
         // The hips' way up from `from` (the hip line's middle, or the hips joint): the spine joint, or, when it sits there
         // (Rigify's starts on the middle of the hip line), the first joint on the way to the head off it. Up toward a joint
@@ -359,11 +351,19 @@ namespace AvatarGo.Core
         // that starts lying down calibrated its pelvis tracker turned 90 degrees).
         private static int UpFrom(HumanoidMap map, SkeletonPose pose, Vector3 from)
         {
-            int spine = map[HumanoidBone.Spine], head = map[HumanoidBone.Head], up = spine;
+            int up = FirstOffTowardHead(map, pose, map[HumanoidBone.Spine], from);
+            return up < 0 ? map[HumanoidBone.Spine] : up;
+        }
+
+        // From `start` on the way to the head, the first joint that does not sit on `from` (within a thousandth of the
+        // distance from there to the head), the head at the latest, or -1 off that way.
+        private static int FirstOffTowardHead(HumanoidMap map, SkeletonPose pose, int start, Vector3 from)
+        {
+            int head = map[HumanoidBone.Head], joint = start;
             float reach = Vector3.Distance(from, At(pose, head));
-            while (up >= 0 && up != head && Vector3.Distance(At(pose, up), from) <= 1e-3f * reach)
-                up = ChildToward(pose.Skeleton, up, head);
-            return up < 0 ? spine : up;
+            while (joint >= 0 && joint != head && Vector3.Distance(At(pose, joint), from) <= 1e-3f * reach)
+                joint = ChildToward(pose.Skeleton, joint, head);
+            return joint;
         }
 
         // The child of `joint` that `descendant` hangs from (or is), or -1.

@@ -55,7 +55,12 @@ namespace AvatarGo.Simulation
         /// </summary>
         public static double SignedAngleDegrees(Vector3 root, Vector3 middle, Vector3 end, Vector3 avatarRoot, Vector3 avatarMiddle, Vector3 avatarEnd)
         {
-            if (!BendsEnough(root, middle, end)) return double.NaN;
+            return BendsEnough(root, middle, end) ? SignedAngleOfBentDegrees(root, middle, end, avatarRoot, avatarMiddle, avatarEnd) : double.NaN;
+        }
+
+        // SignedAngleDegrees for a wearer's limb already known to bend enough (the evaluator checks that first).
+        internal static double SignedAngleOfBentDegrees(Vector3 root, Vector3 middle, Vector3 end, Vector3 avatarRoot, Vector3 avatarMiddle, Vector3 avatarEnd)
+        {
             Vector3 axis = Vectors.NormalizeOr(end - root, Vector3.UnitY);
             Vector3 truthBend = Vectors.ProjectOnPlane(middle - root, axis);
             // The avatar's bend direction off its own limb axis, then seen about the wearer's: a shoulder a few

@@ -220,7 +220,7 @@ namespace AvatarGo.Simulation
                 // A non-finite avatar is counted as such (InvalidCount), not as a wearer's straight limb: it was left out of
                 // every figure under that name.
                 limb.Add(Vectors.IsFinite(ar) && Vectors.IsFinite(am) && Vectors.IsFinite(ae)
-                    ? BendPlaneReport.SignedAngleDegrees(r, m, e, ar, am, ae)
+                    ? BendPlaneReport.SignedAngleOfBentDegrees(r, m, e, ar, am, ae)
                     : double.NaN);
             }
         }

@@ -9,23 +9,8 @@ namespace AvatarGo.Tools.Tests;
 /// Arguments a command cannot honour are bad arguments (exit 2, naming the option), found before any work: each case
 /// here once failed later, as an unreadable input (exit 1) naming something else, or aborted the process.
 /// </summary>
-public class ArgumentRangeTests
+public class ArgumentRangeTests : TempFolderTests
 {
-    private string _dir;
-
-    [SetUp]
-    public void MakeFolder()
-    {
-        _dir = Path.Combine(Path.GetTempPath(), "avatargo-args-" + Guid.NewGuid().ToString("N"));
-        Directory.CreateDirectory(_dir);
-    }
-
-    [TearDown]
-    public void RemoveFolder()
-    {
-        if (Directory.Exists(_dir)) Directory.Delete(_dir, true);
-    }
-
     private static void AssertBadArgument(CliRunner.Result r, string option)
     {
         Assert.That(r.ExitCode, Is.EqualTo(2), r.ToString());
@@ -45,10 +30,10 @@ public class ArgumentRangeTests
     public void AMisspeltFlagIsAnUnknownOptionAndTakesNoOtherOptionAsItsValue()
     {
         // "--jsn" at the end was "needs a value", and before another option it swallowed that option as its value.
-        string session = Path.Combine(_dir, "missing.agsession");
+        string session = Path.Combine(Dir, "missing.agsession");
         var last = CliRunner.Run("calibrate", session, "--jsn");
         AssertBadArgument(last, "unknown option --jsn");
-        var before = CliRunner.Run("calibrate", session, "--jsn", "--save", Path.Combine(_dir, "p.json"));
+        var before = CliRunner.Run("calibrate", session, "--jsn", "--save", Path.Combine(Dir, "p.json"));
         AssertBadArgument(before, "unknown option --jsn");
         // A known option without its value still says so.
         AssertBadArgument(CliRunner.Run("calibrate", session, "--save"), "option --save needs a value");
@@ -78,9 +63,9 @@ public class ArgumentRangeTests
             }
         }
         static string Scale(string v) => (double.Parse(v, System.Globalization.CultureInfo.InvariantCulture) * 1.42 / 2.54).ToString("R", System.Globalization.CultureInfo.InvariantCulture);
-        string clip = Path.Combine(_dir, "giant-inches.bvh");
+        string clip = Path.Combine(Dir, "giant-inches.bvh");
         File.WriteAllText(clip, string.Join("\n", lines));
-        string guessed = Path.Combine(_dir, "guessed.agsession"), given = Path.Combine(_dir, "given.agsession");
+        string guessed = Path.Combine(Dir, "guessed.agsession"), given = Path.Combine(Dir, "given.agsession");
         Assert.That(CliRunner.Run("simulate", "--bvh", clip, "--out", guessed).ExitCode, Is.EqualTo(0));
         var r = CliRunner.Run("simulate", "--bvh", clip, "--out", given, "--units", "in");
         Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
@@ -93,7 +78,7 @@ public class ArgumentRangeTests
 
     private string Session(string name)
     {
-        string path = Path.Combine(_dir, name + ".agsession");
+        string path = Path.Combine(Dir, name + ".agsession");
         Assert.That(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--out", path).ExitCode, Is.EqualTo(0));
         return path;
     }
@@ -105,7 +90,7 @@ public class ArgumentRangeTests
     [TestCase("--misalign-deg", "-1e12")]
     public void SimulatedNoiseAndMisalignmentBeyondASessionsRangeAreBadArguments(string option, string value)
     {
-        string output = Path.Combine(_dir, "x.agsession");
+        string output = Path.Combine(Dir, "x.agsession");
         AssertBadArgument(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--out", output, option, value), option);
         Assert.That(File.Exists(output), Is.False, "nothing written");
     }
@@ -117,20 +102,20 @@ public class ArgumentRangeTests
 
     [Test]
     public void ASeedWithBonesAlongXIsABadArgument() =>
-        AssertBadArgument(CliRunner.Run("bvh", "rebase", Paths.Mocap("mocapbank_30fps.bvh"), Path.Combine(_dir, "out.bvh"), "--rest", "x-along", "--seed", "5"), "--seed");
+        AssertBadArgument(CliRunner.Run("bvh", "rebase", Paths.Mocap("mocapbank_30fps.bvh"), Path.Combine(Dir, "out.bvh"), "--rest", "x-along", "--seed", "5"), "--seed");
 
     [TestCase("--seconds", "1e12")] // a TimeSpan overflowed: the process aborted
     [TestCase("--slow-ms", "-1")]   // every input counted as slow and valid seeds were saved as failures
     [TestCase("--replay", "abc")]   // parsed on the fuzzing thread: the process aborted
     [TestCase("--replay", "-3")]
     public void FuzzOptionsOutOfRangeAreBadArguments(string option, string value) =>
-        AssertBadArgument(CliRunner.Run("fuzz", "--target", "json", "--inputs", "1", "--no-crafted", "--corpus", _dir, option, value), option);
+        AssertBadArgument(CliRunner.Run("fuzz", "--target", "json", "--inputs", "1", "--no-crafted", "--corpus", Dir, option, value), option);
 
     [Test]
     public void WhatTheFuzzingThreadThrowsIsReportedNotAnAbort()
     {
         // An output folder that does not exist, written on the fuzzing thread: the process aborted (exit 134).
-        var r = CliRunner.Run("fuzz", "--target", "json", "--replay", "3", "--out", Path.Combine(_dir, "missing", "x.json"));
+        var r = CliRunner.Run("fuzz", "--target", "json", "--replay", "3", "--out", Path.Combine(Dir, "missing", "x.json"));
         Assert.That(r.ExitCode, Is.EqualTo(1), r.ToString());
         StringAssert.Contains("does not exist", r.Stderr);
     }

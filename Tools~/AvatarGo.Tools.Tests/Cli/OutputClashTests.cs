@@ -12,26 +12,11 @@ namespace AvatarGo.Tools.Tests;
 /// folder given as an input says so; demo leaves the shared temporary folder alone; evaluate says when it has nothing to
 /// compare; --positions' frame column is the frame's index whatever the session's clock.
 /// </summary>
-public class OutputClashTests
+public class OutputClashTests : TempFolderTests
 {
-    private string _dir;
-
-    [SetUp]
-    public void MakeFolder()
-    {
-        _dir = Path.Combine(Path.GetTempPath(), "avatargo-clash-" + Guid.NewGuid().ToString("N"));
-        Directory.CreateDirectory(_dir);
-    }
-
-    [TearDown]
-    public void RemoveFolder()
-    {
-        if (Directory.Exists(_dir)) Directory.Delete(_dir, true);
-    }
-
     private string Session(string name = "s.agsession")
     {
-        string path = Path.Combine(_dir, name);
+        string path = Path.Combine(Dir, name);
         var r = CliRunner.Run("simulate", "--bvh", Paths.Mocap("mocapbank_30fps.bvh"), "--out", path, "--seed", "1");
         Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
         return path;
@@ -39,7 +24,7 @@ public class OutputClashTests
 
     private string Existing(string name)
     {
-        string path = Path.Combine(_dir, name);
+        string path = Path.Combine(Dir, name);
         File.WriteAllText(path, "the previous " + name + "\n");
         return path;
     }
@@ -49,11 +34,11 @@ public class OutputClashTests
     {
         string session = Session();
         byte[] before = File.ReadAllBytes(session);
-        string clip = Path.Combine(_dir, "clip.bvh");
+        string clip = Path.Combine(Dir, "clip.bvh");
         File.Copy(Paths.Mocap("mocapbank_30fps.bvh"), clip);
-        string link = Path.Combine(_dir, "link.agsession");
+        string link = Path.Combine(Dir, "link.agsession");
         File.CreateSymbolicLink(link, session);
-        string same = Path.Combine(_dir, "same");
+        string same = Path.Combine(Dir, "same");
         var runs = new[]
         {
             new[] { "evaluate", session, "--hands", "calibrated", "--json", session },
@@ -82,13 +67,13 @@ public class OutputClashTests
         // The plot's folder does not exist: found before the evaluation now, and the JSON and the positions are kept.
         string session = Session();
         string json = Existing("old.json"), csv = Existing("old.csv");
-        var r = CliRunner.Run("evaluate", session, "--hands", "calibrated", "--json", json, "--positions", csv, "--plot", Path.Combine(_dir, "missing", "p.png"));
+        var r = CliRunner.Run("evaluate", session, "--hands", "calibrated", "--json", json, "--positions", csv, "--plot", Path.Combine(Dir, "missing", "p.png"));
         Assert.That(r.ExitCode, Is.EqualTo(1), r.ToString());
         Assert.That(File.ReadAllText(json), Is.EqualTo("the previous old.json\n"));
         Assert.That(File.ReadAllText(csv), Is.EqualTo("the previous old.csv\n"));
-        Assert.That(Directory.GetFiles(_dir).Select(Path.GetFileName).OrderBy(n => n), Is.EqualTo(new[] { "old.csv", "old.json", "s.agsession" }), "no temporary file left");
+        Assert.That(Directory.GetFiles(Dir).Select(Path.GetFileName).OrderBy(n => n), Is.EqualTo(new[] { "old.csv", "old.json", "s.agsession" }), "no temporary file left");
         // And all of them when the run succeeds.
-        string png = Path.Combine(_dir, "p.png");
+        string png = Path.Combine(Dir, "p.png");
         r = CliRunner.Run("evaluate", session, "--hands", "calibrated", "--json", json, "--positions", csv, "--plot", png);
         Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
         StringAssert.StartsWith("{", File.ReadAllText(json));
@@ -102,10 +87,10 @@ public class OutputClashTests
         // A recording's frames are stamped with Unity's unscaled time, which does not start at 0: the column was
         // round(time x rate), 90360 for frame 360.
         string session = Session();
-        string shifted = Path.Combine(_dir, "shifted.agsession");
+        string shifted = Path.Combine(Dir, "shifted.agsession");
         File.WriteAllLines(shifted, File.ReadAllLines(session).Select(l => l.StartsWith("frame ", StringComparison.Ordinal)
             ? "frame " + (double.Parse(l.Substring(6), CultureInfo.InvariantCulture) + 1000).ToString("R", CultureInfo.InvariantCulture) : l));
-        string a = Path.Combine(_dir, "a.csv"), b = Path.Combine(_dir, "b.csv");
+        string a = Path.Combine(Dir, "a.csv"), b = Path.Combine(Dir, "b.csv");
         Assert.That(CliRunner.Run("evaluate", session, "--hands", "calibrated", "--positions", a).ExitCode, Is.EqualTo(0));
         Assert.That(CliRunner.Run("evaluate", shifted, "--hands", "calibrated", "--positions", b).ExitCode, Is.EqualTo(0));
         string[] First(string path) => File.ReadLines(path).Skip(1).Select(l => l.Split(',')[0]).Take(3).ToArray();
@@ -119,8 +104,8 @@ public class OutputClashTests
     {
         foreach (string[] args in new[]
         {
-            new[] { "session", "info", _dir }, new[] { "evaluate", _dir }, new[] { "bvh", "info", _dir },
-            new[] { "simulate", "--bvh", _dir, "--out", Path.Combine(_dir, "x.agsession") },
+            new[] { "session", "info", Dir }, new[] { "evaluate", Dir }, new[] { "bvh", "info", Dir },
+            new[] { "simulate", "--bvh", Dir, "--out", Path.Combine(Dir, "x.agsession") },
         })
         {
             var r = CliRunner.Run(args);
@@ -135,7 +120,7 @@ public class OutputClashTests
         // A session with its truth lines removed, as a headset records it, evaluated with --avatar: every figure was NaN
         // with exit 0, and --json failed naming a serializer setting.
         string session = Session();
-        string bare = Path.Combine(_dir, "bare.agsession");
+        string bare = Path.Combine(Dir, "bare.agsession");
         File.WriteAllLines(bare, File.ReadAllLines(session).Where(l => !l.StartsWith("truth", StringComparison.Ordinal)));
         string json = Existing("old.json");
         var r = CliRunner.Run("evaluate", bare, "--hands", "calibrated", "--avatar", Paths.Mocap("mocapbank_30fps.bvh"), "--json", json);
