@@ -67,16 +67,36 @@ internal sealed class OutputFiles : IDisposable
     private static StringComparison PathComparison => OperatingSystem.IsWindows() || OperatingSystem.IsMacOS() ? StringComparison.OrdinalIgnoreCase : StringComparison.Ordinal;
 
     // The full path, a symbolic link's final target where the path is one.
+    // The file a path names once every symbolic link on it is followed: the folders along it (`link/s.agsession` where
+    // link points at the session's folder) as well as the file itself.
     private static string Resolved(string path)
     {
-        string full = Path.GetFullPath(path);
         try
         {
-            return new FileInfo(full).ResolveLinkTarget(returnFinalTarget: true)?.FullName ?? full;
+            return Real(Path.GetFullPath(path), 0);
         }
         catch (IOException)
         {
-            return full; // a link loop: the write reports it
+            return Path.GetFullPath(path); // a link loop: the write reports it
         }
+    }
+
+    private const int MaxLinkDepth = 40; // as Linux's ELOOP limit: a longer chain is a loop
+
+    private static string Real(string full, int depth)
+    {
+        if (depth > MaxLinkDepth) throw new IOException("too many levels of symbolic links: " + full);
+        string root = Path.GetPathRoot(full) ?? "";
+        string current = root;
+        foreach (string part in full.Substring(root.Length).Split(Path.DirectorySeparatorChar, StringSplitOptions.RemoveEmptyEntries))
+        {
+            current = Path.Combine(current, part);
+            FileSystemInfo info = Directory.Exists(current) ? new DirectoryInfo(current) : new FileInfo(current);
+            if (info.LinkTarget == null) continue;
+            FileSystemInfo target = info.ResolveLinkTarget(returnFinalTarget: true);
+            // The target's own path may pass through links too.
+            if (target != null) current = Real(target.FullName, depth + 1);
+        }
+        return current;
     }
 }

@@ -38,11 +38,15 @@ public class OutputClashTests : TempFolderTests
         File.Copy(Paths.Mocap("mocapbank_30fps.bvh"), clip);
         string link = Path.Combine(Dir, "link.agsession");
         File.CreateSymbolicLink(link, session);
+        string folderLink = Path.Combine(Dir, "folder-link");
+        Directory.CreateSymbolicLink(folderLink, Dir);
         string same = Path.Combine(Dir, "same");
         var runs = new[]
         {
             new[] { "evaluate", session, "--hands", "calibrated", "--json", session },
             new[] { "evaluate", session, "--hands", "calibrated", "--json", link },          // through a symbolic link
+            new[] { "evaluate", session, "--hands", "calibrated", "--json", Path.Combine(folderLink, "s.agsession") }, // a linked folder
+            new[] { "evaluate", Path.Combine(folderLink, "s.agsession"), "--hands", "calibrated", "--json", session },
             new[] { "evaluate", session, "--hands", "calibrated", "--positions", same, "--bvh-out", same },
             new[] { "calibrate", session, "--save", session },
             new[] { "simulate", "--bvh", clip, "--out", clip },
