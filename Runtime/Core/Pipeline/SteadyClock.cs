@@ -36,7 +36,9 @@ namespace AvatarGo.Core
             double raw = double.IsNaN(_lastTime) ? 0.0 : time - _lastTime;
             double step = Math.Abs(raw) > MaxStepSeconds ? _regularStep : Math.Max(raw, 0.0);
             if (raw > 0.0 && raw <= MaxStepSeconds) _regularStep = raw;
-            _lastTime = time;
+            // A frame stamped slightly early does not move the time the next one is measured from: measured from it, the
+            // next step would include what this one went back (a wider glitch filter, a clock gaining that much for good).
+            if (raw >= 0.0 || raw < -MaxStepSeconds) _lastTime = time;
             Now = double.IsNaN(Now) ? time : Now + step;
             LastStep = step;
             return Now;

@@ -172,10 +172,12 @@ namespace AvatarGo.Core.Tests
         /// One frame's time from long before (0 s in a session at 7 s) does not open the glitch filter: a controller turned
         /// 150° on the next three frames (13,500 °/s, where 3000 °/s is the limit; a turn keeps it within the body's reach) is
         /// not followed (found in review: the stale time counted as 7 s since the device's last sample, which allowed any
-        /// turn and 140 m).
+        /// turn and 140 m). Nor does one stamped slightly early (0.04-0.2 s, within <see cref="SteadyClock.MaxStepSeconds"/>):
+        /// the next frame was measured from that earlier time, which widened its step, and so the filter, by as much (a
+        /// second review: the 150° turn followed whole).
         /// </summary>
-        [Test]
-        public void AStaleFrameTimeDoesNotLetAGlitchThrough()
+        [TestCase(-1.0), TestCase(0.2), TestCase(0.04), TestCase(0.0)]
+        public void AStaleFrameTimeDoesNotLetAGlitchThrough(double secondsEarly)
         {
             int device = Array.IndexOf(SessionSimulator.DeviceRoles, DeviceRole.LeftHand);
             double calibratedAt = double.NaN;
@@ -189,7 +191,7 @@ namespace AvatarGo.Core.Tests
             {
                 double time = frame.Time;
                 bool stale = !double.IsNaN(calibratedAt) && afterStale < 0 && time >= calibratedAt + 3;
-                if (stale) { frame.Time = 0; afterStale = 0; }
+                if (stale) { frame.Time = secondsEarly < 0 ? 0 : time - secondsEarly; afterStale = 0; } // < 0: from the session's start
                 else if (afterStale >= 0 && afterStale < 3)
                 {
                     afterStale++;
