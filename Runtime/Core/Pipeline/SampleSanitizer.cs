@@ -104,12 +104,17 @@ namespace AvatarGo.Core
             return false;
         }
 
+        // What a sample may move beyond the speed limits, whatever the time since the last one: the devices' noise (about a
+        // millimetre and a tenth of a degree) many times over, so that a sample with the same timestamp is no jump for it.
+        // A fixed allowance, not a time: a frame's worth of time (1/90 s) raised the limits by half at 90 Hz and by 160 % at 144 Hz.
+        private const float PositionSlackMetres = 0.02f;
+        private const float AngleSlackDegrees = 3f;
+
         private bool IsJump(RigidPose from, double fromTime, RigidPose to, double toTime)
         {
-            // A frame's worth of slack (1/90 s), so a sample at the same timestamp is not a jump for a millimetre.
-            double elapsed = Math.Max(toTime - fromTime, 0.0) + 1.0 / 90.0;
-            return Vector3.Distance(from.Position, to.Position) > _settings.MaxSpeed * elapsed
-                || Rotations.AngleDegrees(from.Rotation, to.Rotation) > _settings.MaxAngularSpeedDegrees * elapsed;
+            double elapsed = Math.Max(toTime - fromTime, 0.0);
+            return Vector3.Distance(from.Position, to.Position) > _settings.MaxSpeed * elapsed + PositionSlackMetres
+                || Rotations.AngleDegrees(from.Rotation, to.Rotation) > _settings.MaxAngularSpeedDegrees * elapsed + AngleSlackDegrees;
         }
     }
 }
