@@ -24,7 +24,9 @@ namespace AvatarGo.Core
         /// </summary>
         public OneEuroFilter(int devices, float minCutoff, float beta, float derivativeCutoff = 1f)
         {
-            if (!(minCutoff > 0f) || !(beta >= 0f) || !(derivativeCutoff > 0f)) throw new ArgumentOutOfRangeException(nameof(minCutoff), "Cutoffs must be positive and beta not negative.");
+            if (!(minCutoff > 0f) || float.IsInfinity(minCutoff)) throw new ArgumentOutOfRangeException(nameof(minCutoff), minCutoff, "The cutoff must be a finite number of Hz more than 0.");
+            if (!(beta >= 0f) || float.IsInfinity(beta)) throw new ArgumentOutOfRangeException(nameof(beta), beta, "Beta must be a finite number, 0 or more.");
+            if (!(derivativeCutoff > 0f) || float.IsInfinity(derivativeCutoff)) throw new ArgumentOutOfRangeException(nameof(derivativeCutoff), derivativeCutoff, "The derivative's cutoff must be a finite number of Hz more than 0.");
             _minCutoff = minCutoff;
             _beta = beta;
             _derivativeCutoff = derivativeCutoff;

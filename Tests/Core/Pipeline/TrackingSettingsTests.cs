@@ -1,0 +1,63 @@
+using System;
+using System.Reflection;
+using NUnit.Framework;
+
+namespace AvatarGo.Core.Tests
+{
+    /// <summary>
+    /// A bad tracking setting fails where it is set, naming it (found in review: SmoothingBeta = -1 was taken, and every
+    /// frame's Update from the calibration on threw, naming the filter's 'minCutoff'; EaseSeconds = NaN would have held a
+    /// lost part for good, RecoveryMaxSpeed = 0 never let a part come back).
+    /// </summary>
+    public class TrackingSettingsTests
+    {
+        private static readonly string[] Names =
+        {
+            nameof(TrackingSettings.MaxSpeed), nameof(TrackingSettings.MaxAngularSpeedDegrees), nameof(TrackingSettings.ReacquireSeconds),
+            nameof(TrackingSettings.BodyReachFactor), nameof(TrackingSettings.BodyReachMargin), nameof(TrackingSettings.HoldSeconds),
+            nameof(TrackingSettings.EaseSeconds), nameof(TrackingSettings.RecoveryTimeConstant), nameof(TrackingSettings.RecoveryMaxSpeed),
+            nameof(TrackingSettings.RecoveryMaxAngularSpeedDegrees), nameof(TrackingSettings.SmoothingMinCutoff),
+            nameof(TrackingSettings.SmoothingBeta), nameof(TrackingSettings.SwapWindowSeconds), nameof(TrackingSettings.SwapMargin),
+        };
+
+        [Test]
+        public void EveryNumberIsCheckedWhereItIsSet()
+        {
+            // Every float setting is in the list (a new one must say what it accepts).
+            foreach (PropertyInfo p in typeof(TrackingSettings).GetProperties())
+                if (p.PropertyType == typeof(float)) Assert.That(Names, Does.Contain(p.Name), "a new setting: add it here");
+            foreach (string name in Names)
+            {
+                PropertyInfo p = typeof(TrackingSettings).GetProperty(name);
+                var settings = new TrackingSettings();
+                float before = (float)p.GetValue(settings);
+                foreach (float bad in new[] { float.NaN, -1f, float.NegativeInfinity })
+                {
+                    var e = Assert.Throws<TargetInvocationException>(() => p.SetValue(settings, bad), name + " = " + bad);
+                    Assert.That(e.InnerException, Is.TypeOf<ArgumentOutOfRangeException>());
+                    Assert.That(((ArgumentOutOfRangeException)e.InnerException).ParamName, Is.EqualTo(name));
+                    StringAssert.Contains("TrackingSettings." + name, e.InnerException.Message);
+                }
+                Assert.That(p.GetValue(settings), Is.EqualTo(before), name + " kept its value");
+                p.SetValue(settings, before * 2f); // a plausible change is taken
+                Assert.That(p.GetValue(settings), Is.EqualTo(before * 2f));
+            }
+        }
+
+        [TestCase(nameof(TrackingSettings.MaxSpeed)), TestCase(nameof(TrackingSettings.RecoveryMaxSpeed)), TestCase(nameof(TrackingSettings.SmoothingMinCutoff)),
+         TestCase(nameof(TrackingSettings.SwapWindowSeconds)), TestCase(nameof(TrackingSettings.BodyReachFactor))]
+        public void ALimitThatMustMoveRefusesZero(string name)
+        {
+            PropertyInfo p = typeof(TrackingSettings).GetProperty(name);
+            Assert.Throws<TargetInvocationException>(() => p.SetValue(new TrackingSettings(), 0f));
+        }
+
+        [Test]
+        public void TheFiltersErrorsNameTheirOwnParameter()
+        {
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new OneEuroFilter(1, 1f, -1f)).ParamName, Is.EqualTo("beta"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new OneEuroFilter(1, 1f, 1f, 0f)).ParamName, Is.EqualTo("derivativeCutoff"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new OneEuroFilter(1, float.PositiveInfinity, 1f)).ParamName, Is.EqualTo("minCutoff"));
+        }
+    }
+}
