@@ -19,6 +19,10 @@ namespace AvatarGo.Core
         private readonly Vector3 _hipsRightLocal;
         private readonly float _standingHeight;   // head above the feet when standing (the calibration's)
         private float _handsInverted, _handsMisplaced, _feetInverted;
+        private bool _handsReported, _feetReported;   // reported and still swapped: not reported again
+
+        // A reported pair is reported again only after its inversion has faded below this (the devices were put back).
+        private const float ReportAgainBelow = 0.1f;
 
         /// <summary>
         /// Creates a detector. <paramref name="hipsRightLocal"/> is the hips joint's local axis that pointed to the wearer's
@@ -32,12 +36,17 @@ namespace AvatarGo.Core
         }
 
         /// <summary>Forgets what it saw (after a swap was applied, or a new calibration).</summary>
-        public void Clear() => _handsInverted = _handsMisplaced = _feetInverted = 0f;
+        public void Clear()
+        {
+            _handsInverted = _handsMisplaced = _feetInverted = 0f;
+            _handsReported = _feetReported = false;
+        }
 
         /// <summary>
         /// Feeds one frame. <paramref name="limbs"/> holds the joint targets of the current assignment and of the swapped
         /// one, with the limbs' roots (shoulders and hips joints) and lengths. Returns the pair now known to be swapped, if
-        /// any (and forgets it, so a pair is reported once).
+        /// any. A pair is reported once: not again while it stays swapped (devices only reported, not reassigned), only
+        /// after it was put back (or <see cref="Clear"/>, as after reassigning them).
         /// </summary>
         public RoleSwap Update(float dt, RigidPose hips, Vector3 head, in SwapEvidence limbs)
         {
@@ -57,14 +66,16 @@ namespace AvatarGo.Core
                 bool inverted = Vector3.Dot(limbs.LeftFoot - limbs.RightFoot, right) > 0.5f * _settings.SwapMargin;
                 _feetInverted += k * ((inverted ? 1f : 0f) - _feetInverted);
             }
-            if (_handsInverted > 0.9f && _handsMisplaced > 0.3f)
+            if (_handsReported && _handsInverted < ReportAgainBelow) _handsReported = false;
+            if (_feetReported && _feetInverted < ReportAgainBelow) _feetReported = false;
+            if (!_handsReported && _handsInverted > 0.9f && _handsMisplaced > 0.3f)
             {
-                _handsInverted = _handsMisplaced = 0f;
+                _handsReported = true;
                 return RoleSwap.Hands;
             }
-            if (_feetInverted > 0.9f)
+            if (!_feetReported && _feetInverted > 0.9f)
             {
-                _feetInverted = 0f;
+                _feetReported = true;
                 return RoleSwap.Feet;
             }
             return RoleSwap.None;

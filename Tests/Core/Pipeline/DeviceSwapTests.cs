@@ -124,6 +124,34 @@ namespace AvatarGo.Core.Tests
             Assert.That(pipeline.DeviceIndexOf(DeviceRole.LeftFoot), Is.EqualTo(leftBefore), "reported, not reassigned");
         }
 
+        /// <summary>
+        /// A swap only reported is reported once while it stays, and again once it was put back and made again (found in
+        /// review: the feet swapped for 20 s were reported 8 times, each counted by the session evaluator as a new swap).
+        /// </summary>
+        [Test]
+        public void ASwapThatStaysIsReportedOnce()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 64);
+            double t = 0;
+            var settings = new PipelineSettings();
+            settings.Tracking.ReassignSwappedDevices = false;
+            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map, settings);
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            int reports = 0;
+            double lastTime = double.NaN;
+            void Count(DeviceSample[] s)
+            {
+                if (!pipeline.LastSwapTime.Equals(lastTime)) { reports++; lastTime = pipeline.LastSwapTime; }
+            }
+            Stand(wearer, pipeline, ref t, 20.0, s => { Count(s); Swap(s, DeviceRole.LeftFoot, DeviceRole.RightFoot); });
+            Assert.That(reports, Is.EqualTo(1), "20 s swapped");
+            Stand(wearer, pipeline, ref t, 5.0, Count); // put back
+            Stand(wearer, pipeline, ref t, 5.0, s => { Count(s); Swap(s, DeviceRole.LeftFoot, DeviceRole.RightFoot); });
+            Count(null);
+            Assert.That(reports, Is.EqualTo(2), "swapped again after being put back");
+            Assert.That(pipeline.LastSwap, Is.EqualTo(RoleSwap.Feet));
+        }
+
         [Test]
         public void AReStrappedTrackerIsMeasuredAgainAlone()
         {
