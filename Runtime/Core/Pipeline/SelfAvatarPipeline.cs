@@ -265,7 +265,8 @@ namespace AvatarGo.Core
         /// them and the exact offsets computed again on it from the walk-in (<see cref="ScaledAvatar"/>, <see cref="Pose"/> and
         /// the solver are new objects when anything changed; the calibration's <see cref="Profile"/> is the same object, its
         /// proportions and offsets updated, so compare proportions by value, not the profile by reference; later swaps and
-        /// re-measured devices are undone, as by a new calibration). Returns the report with each limb's residual before and
+        /// re-measured devices are undone, as by a new calibration; the new avatar goes on from the old one's pose, a lost part
+        /// from where it was shown). Returns the report with each limb's residual before and
         /// after, or null when no exercise was started. Allocates.
         /// </summary>
         public RefinementReport EndRefinement()
@@ -274,8 +275,9 @@ namespace AvatarGo.Core
             RefinementReport report = _refinement.Solve();
             _refinement = null;
             if (_mapper == null || !report.Changed) return report;
+            HumanoidMap before = _calibrator.ScaledAvatar;
             _calibrator.Refit(report.After);
-            Setup();
+            Setup(continueFrom: before);
             return report;
         }
 
@@ -293,29 +295,45 @@ namespace AvatarGo.Core
         /// <summary>
         /// Applies the hands' <see cref="HandSettings.Controller"/> and <see cref="HandSettings.Placement"/> (and the offset
         /// mode) now instead of at the next calibration: builds the finger solvers (allocates, about 1 ms per hand). Swaps and
-        /// re-measured devices since the calibration are kept.
+        /// re-measured devices since the calibration are kept, and the avatar goes on from the pose it shows (a lost part from
+        /// where it is shown).
         /// </summary>
         public void ApplyHandSettings()
         {
-            if (_mapper != null) Setup(keepMeasured: true);
+            if (_mapper != null) Setup(keepMeasured: true, continueFrom: _calibrator.ScaledAvatar);
         }
 
         // ---- Setup, once per calibration ----------------------------------------------------------------------
 
         // keepMeasured: the hands' settings changed, not the calibration, so the swaps and re-measured devices since it stay.
-        private void Setup(bool keepMeasured = false)
+        // continueFrom: the avatar (map) the session was solved on until now, when it goes on (the hands' settings applied, the
+        // refinement's arms): the avatar continues from the pose it showed, a lost part from where it was shown, not from the
+        // calibration pose (found in review: a hand lost when the settings were applied jumped 0.76 m to the T-pose).
+        private void Setup(bool keepMeasured = false, HumanoidMap continueFrom = null)
         {
             if (!keepMeasured || _measured == null) _measured = _calibrator.Profile;
             HumanoidMap scaled = _calibrator.ScaledAvatar;
             SkeletonPose calibrationPose = _calibrator.AvatarPose;
+            SkeletonPose shown = continueFrom != null && _pose != null && _pose.Skeleton == continueFrom.Skeleton ? _pose : null, shownGood = _lastGood;
+            bool sameAvatar = shown != null && continueFrom == scaled;
             _pose = new SkeletonPose(scaled.Skeleton);
             _pose.CopyFrom(calibrationPose);
             _lastGood = new SkeletonPose(scaled.Skeleton);
             _lastGood.CopyFrom(calibrationPose);
-            _targets = default;
-            _report = default;
-            _ik = new FullBodyIk(scaled, calibrationPose) { ShrugReleaseSeconds = Settings.ShrugReleaseSeconds };
-            _window = new SampleWindow(_devices.Length, Settings.Calibration);
+            if (shown != null)
+            {
+                CarryPose(shown, _pose);
+                CarryPose(shownGood, _lastGood);
+            }
+            if (!sameAvatar)
+            {
+                // The same avatar keeps its solver (the held shrugs), its targets and the window a device is re-measured from.
+                _targets = default;
+                _report = default;
+                _ik = new FullBodyIk(scaled, calibrationPose);
+                _window = new SampleWindow(_devices.Length, Settings.Calibration);
+            }
+            _ik.ShrugReleaseSeconds = Settings.ShrugReleaseSeconds;
             TrackingSettings tracking = Settings.Tracking;
             _smoothing = tracking.Smoothing ? new OneEuroFilter(_devices.Length, tracking.SmoothingMinCutoff, tracking.SmoothingBeta) : null;
             _accepted = new DeviceSample[_devices.Length];
@@ -339,12 +357,26 @@ namespace AvatarGo.Core
                 state.Placement = state.HasFingerIk && Settings.Hand(side).Placement == HandPlacement.PalmOnController
                     ? HandPlacement.PalmOnController : HandPlacement.CalibratedOffset;
             }
-            Bind(false);
+            Bind(shown != null, shown, continueFrom);
+        }
+
+        // The pose shown on one avatar carried to another of the same joints (the refinement changes bone lengths only): the
+        // joints' rotations and the roots' places; the same avatar's, copied.
+        private static void CarryPose(SkeletonPose from, SkeletonPose to)
+        {
+            if (from.Skeleton == to.Skeleton) { to.CopyFrom(from); return; }
+            if (from.Local.Length != to.Local.Length) return;
+            Skeleton s = to.Skeleton;
+            for (int j = 0; j < to.Local.Length; j++)
+                to.Local[j] = new RigidPose(s.GetParent(j) < 0 ? from.Local[j].Position : to.Local[j].Position, from.Local[j].Rotation);
+            to.Origin = from.Origin;
+            to.UpdateWorld();
         }
 
         // Everything that depends on which device plays which role and on the offsets: rebuilt after a calibration, a
-        // swap or a re-measured device. After the last two the avatar blends from its current pose.
-        private void Bind(bool blendFromCurrentPose)
+        // swap or a re-measured device. After the last two the avatar blends from its current pose (or from
+        // shownPose on shownAvatar: the pose shown until a new avatar replaced it).
+        private void Bind(bool blendFromCurrentPose, SkeletonPose shownPose = null, HumanoidMap shownAvatar = null)
         {
             HumanoidMap scaled = _calibrator.ScaledAvatar;
             SkeletonPose calibrationPose = _calibrator.AvatarPose;
@@ -367,7 +399,7 @@ namespace AvatarGo.Core
             foreach (DeviceRole role in BodyRoles.All) reach[_roles[role]] = Vector3.Distance(walkIn.DeviceAtCalibration(role).Position, head0);
             _sanitizer = new SampleSanitizer(_devices.Length, _roles[DeviceRole.Head], reach, Settings.Tracking);
             _continuity = new TrackingContinuity(active, _roles, scaled, calibrationPose, Settings.Tracking);
-            if (blendFromCurrentPose) _continuity.StartFrom(_pose, scaled);
+            if (blendFromCurrentPose) _continuity.StartFrom(shownPose ?? _pose, shownAvatar ?? scaled);
             _swaps.Clear();
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {

@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using System.IO;
 using NUnit.Framework;
 using AvatarGo.Simulation;
@@ -170,6 +171,37 @@ namespace AvatarGo.Core.Tests
             Assert.That(bytes, Is.All.EqualTo(0L), "bytes allocated per refining frame");
             RefinementReport report = pipeline.EndRefinement();
             Assert.That(report.Arm(BodySide.Left).Samples, Is.EqualTo(330));
+        }
+
+        /// <summary>
+        /// The refined avatar goes on from the pose the old one showed: a hand lost when the exercise ends stays where it was
+        /// shown, not at the calibration's T-pose (found in review, on the path the hands' settings take too).
+        /// </summary>
+        [Test]
+        public void AHandLostWhenTheRefinementEndsStaysWhereItWasShown()
+        {
+            string session = Simulate(BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true }), 1);
+            using var reader = new SessionReader(new StringReader(session), "refine");
+            var pipeline = new SelfAvatarPipeline(reader.Header.Devices, Proportions.ScaleLimbs(reader.Header.TruthHumanoid, 1.1f, 0.9f));
+            SessionFrame frame = reader.CreateFrame();
+            while (pipeline.State != CalibrationState.Calibrated && reader.ReadFrame(frame)) pipeline.Update(frame);
+            Assert.That(pipeline.BeginRefinement(), Is.True);
+            int device = Array.IndexOf(SessionSimulator.DeviceRoles, DeviceRole.RightHand);
+            float largestStep = 0f;
+            Vector3 last = new Vector3(float.NaN);
+            RefinementReport report = null;
+            for (int i = 0; i < 400 && reader.ReadFrame(frame); i++)
+            {
+                if (i >= 300) frame.Samples[device] = new DeviceSample(frame.Samples[device].Pose, false); // lost from frame 300 on
+                if (i == 310) report = pipeline.EndRefinement();
+                pipeline.Update(frame);
+                Vector3 p = pipeline.Pose.World[pipeline.ScaledAvatar[HumanoidBone.RightHand]].Position;
+                if (i >= 295 && Vectors.IsFinite(last)) largestStep = Math.Max(largestStep, Vector3.Distance(p, last));
+                last = p;
+            }
+            Assert.That(report, Is.Not.Null);
+            Assume.That(report.Changed, Is.True, "the arms 10 % long are refined");
+            Assert.That(largestStep, Is.LessThan(0.03f), "the lost hand's largest step in one frame around the end of the exercise (m)");
         }
 
         /// <summary>

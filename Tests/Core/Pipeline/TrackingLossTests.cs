@@ -218,6 +218,48 @@ namespace AvatarGo.Core.Tests
             Assert.That(largestError, Is.LessThan(10f), "the left wrist did not turn with the glitch (degrees in one frame beyond the wearer's turn, the half second from the stale frame)");
         }
 
+        /// <summary>
+        /// The hands' settings applied during a session (another controller picked in a menu) while a device is lost: its part
+        /// goes on from where it was shown (found in review: the lost hand jumped 0.76 m, the pelvis 42 mm, and the avatar frozen
+        /// by a lost HMD 62 mm, to the calibration's T-pose). The largest one-frame step of the device's joint afterwards.
+        /// </summary>
+        [TestCase(DeviceRole.RightHand, true), TestCase(DeviceRole.Pelvis, true), TestCase(DeviceRole.Head, true), TestCase(DeviceRole.RightHand, false)]
+        public void HandSettingsAppliedDuringALossMoveNothing(DeviceRole role, bool lose)
+        {
+            int device = Array.IndexOf(SessionSimulator.DeviceRoles, role);
+            double calibratedAt = double.NaN;
+            bool applied = false;
+            float largestStep = 0f;
+            HumanoidBone bone = BodyRoles.JointOf(role);
+            Vector3 last = new Vector3(float.NaN);
+            using SessionReader reader = Sessions.Read(MocapBank);
+            var pipeline = new SelfAvatarPipeline(reader.Header.Devices, reader.Header.TruthHumanoid);
+            SessionFrame frame = reader.CreateFrame();
+            while (reader.ReadFrame(frame))
+            {
+                bool lost = lose && !double.IsNaN(calibratedAt) && frame.Time >= calibratedAt + 3 && frame.Time < calibratedAt + 3.5;
+                if (lost) frame.Samples[device] = new DeviceSample(frame.Samples[device].Pose, false);
+                if (!applied && !double.IsNaN(calibratedAt) && frame.Time >= calibratedAt + 3.1)
+                {
+                    pipeline.ApplyHandSettings();
+                    applied = true;
+                }
+                pipeline.Update(frame);
+                if (double.IsNaN(calibratedAt))
+                {
+                    if (pipeline.State == CalibrationState.Calibrated) calibratedAt = frame.Time;
+                    continue;
+                }
+                Vector3 p = pipeline.Pose.World[pipeline.ScaledAvatar[bone]].Position;
+                if (applied && Vectors.IsFinite(last)) largestStep = Math.Max(largestStep, Vector3.Distance(p, last));
+                last = p;
+                if (frame.Time > calibratedAt + 6) break;
+            }
+            Assert.That(applied, Is.True);
+            // Without the change, the steps after the call are 17 mm (the hand) and 6 mm (the pelvis) at most: the motion's.
+            Assert.That(largestStep, Is.LessThan(0.03f), $"{bone}: the largest step in one frame after the settings were applied (m)");
+        }
+
         [Test]
         public void ALostHandHangsFromItsShoulder()
         {
