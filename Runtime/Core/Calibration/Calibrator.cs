@@ -196,7 +196,7 @@ namespace AvatarGo.Core
             var unscaled = new SkeletonPose(_avatar.Skeleton);
             TPoser.Apply(_avatar, unscaled, RigidPose.Identity, null, _settings.SpineJointsAsBound);
             float avatarEye = TPoser.EyePosition(_avatar, unscaled, System.Numerics.Quaternion.Identity).Y;
-            float scale = chosen.EyeHeight / avatarEye;
+            float scale = TPoser.ScaleForEyeHeight(_avatar, unscaled, chosen.EyeHeight);
             _tposeFeatures = Features(chosen.Floor);
             ProportionFit fit = ProportionFitter.Fit(_avatar, _tposeFeatures, _settings.Proportions);
             BodyProportions proportions = BodyProportions.Uniform;

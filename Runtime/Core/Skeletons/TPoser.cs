@@ -155,6 +155,20 @@ namespace AvatarGo.Core
         }
 
         /// <summary>
+        /// The uniform scale that puts the eyes of <paramref name="map"/>'s T-pose <paramref name="pose"/> (unscaled, standing
+        /// on the floor at y = 0) at <paramref name="eyeHeight"/> metres. Eye bones scale with the avatar; a rig without them
+        /// has its eyes <see cref="HeadToEyes"/> from the head joint, a human head's offset in metres, after scaling (as
+        /// <see cref="EyePosition"/> places them on the scaled avatar): divided by the head joint's height, not added to it,
+        /// so that an avatar in centimetres or millimetres gets its eyes at the wearer's (the offset in its units made it
+        /// 4.6 % too tall).
+        /// </summary>
+        public static float ScaleForEyeHeight(HumanoidMap map, SkeletonPose pose, float eyeHeight)
+        {
+            if (map.Has(HumanoidBone.LeftEye) && map.Has(HumanoidBone.RightEye)) return eyeHeight / EyePosition(map, pose, Quaternion.Identity).Y;
+            return (eyeHeight - HeadToEyes.Y) / pose.World[map[HumanoidBone.Head]].Position.Y;
+        }
+
+        /// <summary>
         /// Where the eyes are relative to the head joint, in the body frame (x right, y up, z forward), for rigs
         /// without eye bones: 7 cm up and 9 cm forward, the eye position relative to the top of the neck of an
         /// adult head (head joints of common rigs sit at the skull base).

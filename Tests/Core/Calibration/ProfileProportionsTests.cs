@@ -52,11 +52,15 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void UniformModeMeasuresButDoesNotFit()
         {
-            CalibrationProfile p = Calibrated(ScaleMode.Uniform, out _).Profile;
+            Calibrator c = Calibrated(ScaleMode.Uniform, out _);
+            CalibrationProfile p = c.Profile;
             Assert.That(p.ScaleMode, Is.EqualTo(ScaleMode.Uniform));
             Assert.That(p.Proportions.IsUniform, Is.True);
             Assert.That(p.Measurements, Is.Not.Null);
-            Assert.That(p.AvatarScale, Is.EqualTo(p.WearerEyeHeight / p.AvatarEyeHeight).Within(1e-5f), "the paper's scale");
+            // The paper's scale: the scaled avatar's eyes at the wearer's (this rig has no eye bones: 7 cm above its head
+            // joint once scaled, TPoser.ScaleForEyeHeight; it was the ratio of eye heights with that offset unscaled).
+            BodyMeasurements scaled = ProportionFitter.MeasureSkeleton(c.ScaledAvatar);
+            Assert.That(scaled.EyeHeight.Value, Is.EqualTo(p.WearerEyeHeight).Within(1e-4), "the paper's scale");
         }
 
         [Test]
