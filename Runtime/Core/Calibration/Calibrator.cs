@@ -129,10 +129,21 @@ namespace AvatarGo.Core
             for (int e = 0; events != null && e < events.Count; e++)
             {
                 if (events[e].Kind != DeviceEventKind.TriggerPressed) continue;
-                string ignored = WhyIgnored(events[e].DeviceId, time, acted && result.Outcome != CalibrationStepOutcome.PressIgnored);
-                result = ignored != null
-                    ? new CalibrationStep(State, CalibrationStepOutcome.PressIgnored, LastStep.Error, LastStep.Message, ignored)
-                    : State == CalibrationState.WaitingForTPose ? Identify(time) : ComputeOffsets(time);
+                bool stepRan = acted && result.Outcome != CalibrationStepOutcome.PressIgnored;
+                string ignored = WhyIgnored(events[e].DeviceId, time, stepRan);
+                if (ignored != null && stepRan)
+                {
+                    // The step this frame ran stays what the frame did (the other trigger is often pressed with it): reported
+                    // as ignored instead, the step was never announced, saved or followed by the refinement (found in review).
+                    result = new CalibrationStep(result.State, result.Outcome, result.Error, result.Message,
+                        result.Explanation != null ? result.Explanation + "; " + ignored : ignored);
+                }
+                else
+                {
+                    result = ignored != null
+                        ? new CalibrationStep(State, CalibrationStepOutcome.PressIgnored, LastStep.Error, LastStep.Message, ignored)
+                        : State == CalibrationState.WaitingForTPose ? Identify(time) : ComputeOffsets(time);
+                }
                 acted = true;
                 LastStep = result;
             }
@@ -146,8 +157,8 @@ namespace AvatarGo.Core
             DeviceInfo device = _devices[index];
             if (!_settings.AcceptTriggerFromAnyDevice && device.Class != DeviceClass.Controller)
                 return $"a trigger press from {device} was ignored: only a controller's trigger advances calibration";
-            if (State == CalibrationState.Calibrated) return $"a trigger press from {device} was ignored: already calibrated (reset to calibrate again)";
             if (stepRanThisFrame) return $"a second trigger press in the same frame ({device}) was ignored: one step per press";
+            if (State == CalibrationState.Calibrated) return $"a trigger press from {device} was ignored: already calibrated (reset to calibrate again)";
             if (time - _lastAdvance < _settings.WindowSeconds)
                 return $"a trigger press from {device} was ignored: it came {time - _lastAdvance:0.00} s after the previous step, " +
                        $"sooner than the {_settings.WindowSeconds:0.0#} s the next step averages over";

@@ -43,8 +43,44 @@ namespace AvatarGo.Core.Tests
         {
             Calibrator c = Run(i => i == 89 ? new[] { Press(1), Press(2) } : None, 400);
             Assert.That(c.State, Is.EqualTo(CalibrationState.WalkIn), "the second press of the frame must not compute the offsets");
-            Assert.That(c.LastStep.Outcome, Is.EqualTo(CalibrationStepOutcome.PressIgnored));
+            // The step that ran is what the frame did (found in review: the ignored press replaced it, so the flow never
+            // announced the T-pose, nor saved the calibration at the walk-in); the ignored press is told in its explanation.
+            Assert.That(c.LastStep.Outcome, Is.EqualTo(CalibrationStepOutcome.Advanced));
             Assert.That(c.LastStep.Explanation, Does.Contain("same frame"));
+        }
+
+        /// <summary>
+        /// Both triggers pressed together at each step, as wearers do: the flow sees the T-pose accepted and the calibration
+        /// to save, as with one trigger.
+        /// </summary>
+        [Test]
+        public void BothTriggersAtEachStepAreAnnouncedAndSaved()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 11, DeviceMountings.Default());
+            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map);
+            var flow = new CalibrationFlow();
+            var samples = new DeviceSample[6];
+            var both = new List<DeviceEvent> { new DeviceEvent(1, DeviceEventKind.TriggerPressed), new DeviceEvent(2, DeviceEventKind.TriggerPressed) };
+            var seen = CalibrationFlowEvents.None;
+            double t = 0;
+            void Hold()
+            {
+                for (int i = 0; i < 90; i++)
+                {
+                    wearer.Sample(samples, 0.001f, 0.1f);
+                    t += 1.0 / 90;
+                    CalibrationStep step = pipeline.Update(t, samples, default, default, i == 89 ? both : null);
+                    seen |= flow.Update(t, step, pipeline.State);
+                }
+            }
+            wearer.StandInTPose(RigidPose.Identity);
+            Hold();
+            wearer.StandInTPose(pipeline.Profile.Placement);
+            Hold();
+            Assert.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated));
+            Assert.That(seen & CalibrationFlowEvents.TPoseAccepted, Is.EqualTo(CalibrationFlowEvents.TPoseAccepted), seen.ToString());
+            Assert.That(seen & CalibrationFlowEvents.SaveProfile, Is.EqualTo(CalibrationFlowEvents.SaveProfile), seen.ToString());
+            Assert.That(pipeline.LastCalibrationStep.Explanation, Does.Contain("same frame"));
         }
 
         [Test]
