@@ -230,7 +230,8 @@ namespace AvatarGo
         {
             int index = transforms.Count;
             transforms.Add(t);
-            nodes.Add(new HierarchyNode(t.name, parent, t.localPosition.ToCore(), t.localRotation.ToCore(), t.localScale.ToCore()));
+            // A transform that draws (the mannequin's capsules, a prop on a finger) is never taken for a bone's end point.
+            nodes.Add(new HierarchyNode(t.name, parent, t.localPosition.ToCore(), t.localRotation.ToCore(), t.localScale.ToCore(), t.GetComponent<Renderer>() != null));
             for (int c = 0; c < t.childCount; c++) Add(t.GetChild(c), index, transforms, nodes);
         }
 

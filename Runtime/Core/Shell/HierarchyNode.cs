@@ -24,14 +24,29 @@ namespace AvatarGo.Core
         /// <summary>The scale relative to the parent (the binding needs it uniform and positive).</summary>
         public readonly Vector3 LocalScale;
 
-        /// <summary>Creates a node.</summary>
+        /// <summary>
+        /// The transform draws something (a Unity Renderer): a mesh or primitive attached to a bone, such as the mannequin's
+        /// capsules or a ring on a finger. A humanoid binding (<see cref="HumanoidHierarchy.TryFromBones"/>) never takes such a
+        /// node for a bone's end point (a fingertip, the toes' tip, the crown); binding by names takes every node, as a rig
+        /// whose bones carry their own meshes needs.
+        /// </summary>
+        public readonly bool HasRenderer;
+
+        /// <summary>Creates a node of a transform that draws nothing.</summary>
         public HierarchyNode(string name, int parent, Vector3 localPosition, Quaternion localRotation, Vector3 localScale)
+            : this(name, parent, localPosition, localRotation, localScale, false)
+        {
+        }
+
+        /// <summary>Creates a node; <paramref name="hasRenderer"/>: see <see cref="HasRenderer"/>.</summary>
+        public HierarchyNode(string name, int parent, Vector3 localPosition, Quaternion localRotation, Vector3 localScale, bool hasRenderer)
         {
             Name = name;
             Parent = parent;
             LocalPosition = localPosition;
             LocalRotation = localRotation;
             LocalScale = localScale;
+            HasRenderer = hasRenderer;
         }
     }
 }

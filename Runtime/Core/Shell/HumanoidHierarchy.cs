@@ -98,8 +98,11 @@ namespace AvatarGo.Core
                 boneOfNode[node] = b;
                 for (int k = node; k >= 0 && !keep[k]; k = nodes[k].Parent) keep[k] = true;
             }
-            // The end points after the last finger and toe bones: the finger model's tips, the T-pose's floor contact.
+            // The end points after the last finger and toe bones and the head: the finger model's tips, the T-pose's floor
+            // contact, the crown that stands the head up (found in review: without Mixamo's HeadTop_End the bound avatar kept
+            // its bind pose's head, and its eyes 3 cm lower scaled it 1.8 % too tall: the hands 26 mm off their controllers).
             foreach (HumanoidBone bone in TipParents) KeepChildrenAsEndSites(nodes, boneNodes[(int)bone], keep, endSite);
+            KeepChildrenAsEndSites(nodes, boneNodes[(int)HumanoidBone.Head], keep, endSite);
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {
                 int toes = boneNodes[(int)HumanoidBones.OnSide(HumanoidBone.LeftToes, side)];
@@ -170,7 +173,7 @@ namespace AvatarGo.Core
         {
             if (parent < 0 || parent >= nodes.Count) return;
             for (int c = parent + 1; c < nodes.Count; c++)
-                if (nodes[c].Parent == parent && !keep[c]) { keep[c] = true; endSite[c] = true; }
+                if (nodes[c].Parent == parent && !keep[c] && !nodes[c].HasRenderer) { keep[c] = true; endSite[c] = true; }
         }
 
         private static string CheckOrder(IReadOnlyList<HierarchyNode> nodes)

@@ -12,9 +12,10 @@ namespace AvatarGo.Core
     /// mannequin from this; every decision about what goes where is taken here.
     /// </summary>
     /// <remarks>
-    /// <para>Joints are listed parents first, so a builder can create them in order. End sites are not joints of the
-    /// mannequin (a Unity humanoid does not need them) unless they play a humanoid bone; the segment to an end site is
-    /// still drawn, from its parent. Branches of helper joints that lead to no humanoid bone (Rigify's pelvis.L and
+    /// <para>Joints are listed parents first, so a builder can create them in order. End sites are joints of the mannequin
+    /// too, empty transforms: a Unity humanoid does not need them, but the binding takes them for the fingertips, the toes'
+    /// tip and the crown (found in review: without them it took the capsules drawn on the last segments, halfway along,
+    /// for the tips). The segment to an end site is drawn from its parent. Branches of helper joints that lead to no humanoid bone (Rigify's pelvis.L and
     /// pelvis.R, a face rig) stay transforms but are not drawn: their rest rotations are all that places them, and the
     /// mannequin must not depend on how a file expresses its rest pose.</para>
     /// <para>Sizes scale with the body: <see cref="Stature"/> is estimated from the hip height in the T-pose (hips at 0.53
@@ -79,8 +80,9 @@ namespace AvatarGo.Core
             return new MannequinBlueprint(rootName, stature, joints, parts, humanBones.ToArray());
         }
 
-        // The skeleton's joints minus its end sites, parents first; the root of the skeleton takes its world T-pose as its
-        // local pose under the mannequin's root (which stands at the origin).
+        // The skeleton's joints, end sites too (empty transforms: the binding's fingertips, toes' tips and crown), parents
+        // first; the root of the skeleton takes its world T-pose as its local pose under the mannequin's root (which stands at
+        // the origin).
         private static MannequinJoint[] JointsOf(HumanoidMap map, SkeletonPose pose, out int[] jointOf)
         {
             Skeleton skeleton = map.Skeleton;
@@ -90,7 +92,6 @@ namespace AvatarGo.Core
             for (int j = 0; j < skeleton.JointCount; j++)
             {
                 jointOf[j] = -1;
-                if (skeleton.IsEndSite(j) && map.BoneOf(j) == HumanoidBone.LastBone) continue; // a hand may be an end site (Rigify)
                 int parent = skeleton.GetParent(j);
                 int parentJoint = parent >= 0 ? jointOf[parent] : -1;
                 RigidPose local = parent >= 0 ? pose.Local[j] : pose.World[j];

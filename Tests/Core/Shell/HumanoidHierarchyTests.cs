@@ -61,6 +61,37 @@ namespace AvatarGo.Core.Tests
             Assert.That(HandModel.CanModel(h.Map, BodySide.Left, out string reason), Is.True, reason);
         }
 
+        /// <summary>
+        /// The head's crown is kept too (Mixamo's HeadTop_End: without it the bound avatar's head kept its bind pose in the
+        /// T-pose, its eyes 3 cm lower, and the avatar came out 1.8 % too tall), and a drawn object under the head or a last
+        /// finger joint (a hat, a ring, the mannequin's primitives) is no end point: the bound avatar's T-pose is the wearer's.
+        /// </summary>
+        [Test]
+        public void TheCrownIsKeptAndDrawnObjectsAreNoEndPoints()
+        {
+            HumanoidMap mocap = Mocap("mixamo_fingers_30fps.bvh");
+            EngineHierarchy engine = EngineHierarchy.FromSkeleton(mocap, Quaternion.Identity, 1f);
+            var nodes = new List<HierarchyNode>(engine.Read());
+            int head = engine.BoneNodes[(int)HumanoidBone.Head], distal = engine.BoneNodes[(int)HumanoidBone.LeftIndexDistal];
+            // Appended after every node: still depth-first (their parents come before them).
+            nodes.Add(new HierarchyNode("Hat", head, new Vector3(0f, 0.3f, 0f), Quaternion.Identity, Vector3.One, hasRenderer: true));
+            nodes.Add(new HierarchyNode("Ring", distal, new Vector3(0.1f, 0f, 0f), Quaternion.Identity, Vector3.One, hasRenderer: true));
+            Assert.That(HumanoidHierarchy.TryFromBones(nodes, engine.BoneNodes, 1f, out HumanoidHierarchy h, out string error), Is.True, error);
+            Assert.That(h.Skeleton.IndexOf("mixamorig:HeadTop_End"), Is.GreaterThan(0), "the crown");
+            Assert.That(h.Skeleton.IndexOf("Hat"), Is.EqualTo(-1));
+            Assert.That(h.Skeleton.IndexOf("Ring"), Is.EqualTo(-1));
+            float Eyes(HumanoidMap map)
+            {
+                var pose = new SkeletonPose(map.Skeleton);
+                TPoser.Apply(map, pose, RigidPose.Identity);
+                return TPoser.EyePosition(map, pose, Quaternion.Identity).Y;
+            }
+            Assert.That(Eyes(h.Map), Is.EqualTo(Eyes(mocap)).Within(1e-4f), "the T-pose's eye height (m)");
+            var bound = new HandModel(h.Map, BodySide.Left);
+            var own = new HandModel(mocap, BodySide.Left);
+            for (int f = 0; f < 5; f++) Approx.Near(own.TipLocal[f], bound.TipLocal[f], 1e-5f, "finger " + f + "'s tip");
+        }
+
         [Test]
         public void NamesThatRepeatAreMadeUnique()
         {
