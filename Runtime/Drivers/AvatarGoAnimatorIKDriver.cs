@@ -101,6 +101,9 @@ namespace AvatarGo
         private void Update()
         {
             if (!SetUp()) return;
+            // A stopped (or failed) calibrator has put the bind positions back (its OnDisable): the avatar is its Animator's
+            // until it comes back, as with the transform driver (found in review: the last solved pose went on being set).
+            if (!m_Calibrator.isActiveAndEnabled) return;
             SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
             SkeletonPose pose = pipeline?.Pose;
             if (pose == null || pipeline.Profile == null) return;
@@ -119,6 +122,11 @@ namespace AvatarGo
         private void OnAnimatorIK(int layerIndex)
         {
             if (!_setUp || _failed || m_Calibrator == null) return;
+            if (!m_Calibrator.isActiveAndEnabled)
+            {
+                ReleaseGoals();
+                return;
+            }
             SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
             SkeletonPose pose = pipeline?.Pose;
             if (pose == null || _targets == null || !ReferenceEquals(pipeline.ScaledAvatar, _avatar)) return;
@@ -174,6 +182,17 @@ namespace AvatarGo
             if (!m_DriveSpine) return;
             for (int b = 0; b < _targets.TurnedBoneCount; b++)
                 _animator.SetBoneLocalRotation((HumanBodyBones)_targets.TurnedBone(b), _targets.TurnedLocalRotation(b).ToUnity());
+        }
+
+        // No goal or hint holds the limbs: the animation alone poses them.
+        private void ReleaseGoals()
+        {
+            for (int g = 0; g < 4; g++)
+            {
+                _animator.SetIKPositionWeight((AvatarIKGoal)g, 0f);
+                _animator.SetIKRotationWeight((AvatarIKGoal)g, 0f);
+                _animator.SetIKHintPositionWeight((AvatarIKHint)g, 0f);
+            }
         }
 
         // What the Animator made of the last pass: the hips from the body set, each bone from its goal's rotation. Only a

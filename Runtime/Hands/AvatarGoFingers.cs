@@ -109,6 +109,8 @@ namespace AvatarGo
         private void LateUpdate()
         {
             if (_failed || !Attach()) return;
+            // A stopped (or failed) calibrator gave the avatar back to its Animator: the last grip is not written over it.
+            if (!m_Calibrator.isActiveAndEnabled) return;
             SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
             if (pipeline == null) return;
             pipeline.Settings.LeftHand.Grip = m_LeftGrip;
