@@ -223,6 +223,10 @@ namespace AvatarGo.Core
                 return Refuse(CalibrationError.AvatarScaleOutOfRange,
                     FormattableString.Invariant($"the avatar would be scaled by {scale:G3}, outside {CalibrationProfileStore.MinAvatarScale:G3}–{CalibrationProfileStore.MaxAvatarScale:G3} (its eye height {avatarEye:G4} in its units)"),
                     explanation.ToString());
+            if (!(avatarEye > 0f && avatarEye <= CalibrationProfileStore.MaxHeight))
+                return Refuse(CalibrationError.AvatarScaleOutOfRange,
+                    FormattableString.Invariant($"the avatar's eyes are at {avatarEye:G5} in its units, beyond the {CalibrationProfileStore.MaxHeight:G3} a saved profile holds (model it in larger units)"),
+                    explanation.ToString());
             RigidPose placement = _validator.Placement(_deviceByRole, _averages, chosen.Floor, forward);
             ShowAvatar(scale, placement, proportions);
             Profile = new CalibrationProfile

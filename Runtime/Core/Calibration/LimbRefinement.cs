@@ -54,6 +54,6 @@ namespace AvatarGo.Core
 
         /// <inheritdoc/>
         public override string ToString() => FormattableString.Invariant(
-            $"{LengthBefore * 1000:0} -> {LengthAfter * 1000:0} mm ({(Refined ? "refined" : "kept")}), residual {ResidualBefore * 1000:+0.0;-0.0} -> {ResidualAfter * 1000:+0.0;-0.0} mm over {Samples} frames{(float.IsNaN(ShoulderOffset) ? "" : $", centre {ShoulderOffset * 1000:0} mm from the shoulder")}");
+            $"{LengthBefore * 1000:0} -> {LengthAfter * 1000:0} mm ({(Refined ? "refined" : "kept")}), residual {ResidualBefore * 1000:+0.0;-0.0;0.0} -> {ResidualAfter * 1000:+0.0;-0.0;0.0} mm over {Samples} frames{(float.IsNaN(ShoulderOffset) ? "" : $", centre {ShoulderOffset * 1000:0} mm from the shoulder")}");
     }
 }

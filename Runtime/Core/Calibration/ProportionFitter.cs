@@ -84,7 +84,7 @@ namespace AvatarGo.Core
             var why = new StringBuilder();
             float dHips = features.Hips - uniform.Features.Hips;
             bool legs = Math.Abs(dHips) > legBand;
-            why.Append(FormattableString.Invariant($"legs {(legs ? "refitted" : "kept")}: hip height {dHips * 100:+0.0;-0.0} cm from the uniform avatar's (uncertainty {legBand * 100:0.0} cm)"));
+            why.Append(FormattableString.Invariant($"legs {(legs ? "refitted" : "kept")}: hip height {dHips * 100:+0.0;-0.0;0.0} cm from the uniform avatar's (uncertainty {legBand * 100:0.0} cm)"));
             float dLeft = features.LeftReach - uniform.Features.LeftReach, dRight = features.RightReach - uniform.Features.RightReach;
             bool leftArm, rightArm;
             if (settings.PerSide)
@@ -93,7 +93,7 @@ namespace AvatarGo.Core
                 rightArm = Math.Abs(dRight) > armBand;
             }
             else leftArm = rightArm = Math.Abs(0.5f * (dLeft + dRight)) > armBand;
-            why.Append(FormattableString.Invariant($"; arms {(leftArm || rightArm ? "refitted" : "kept")}: reach {dLeft * 100:+0.0;-0.0} / {dRight * 100:+0.0;-0.0} cm from the uniform avatar's (uncertainty {armBand * 100:0.0} cm)"));
+            why.Append(FormattableString.Invariant($"; arms {(leftArm || rightArm ? "refitted" : "kept")}: reach {dLeft * 100:+0.0;-0.0;0.0} / {dRight * 100:+0.0;-0.0;0.0} cm from the uniform avatar's (uncertainty {armBand * 100:0.0} cm)"));
 
             // Started from the measured proportions (the same groups, averaged over the sides unless per side): a step or two.
             float startArm = settings.PerSide ? 1f : 0.5f * (measured.LeftArm + measured.RightArm);

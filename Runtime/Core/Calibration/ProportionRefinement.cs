@@ -276,7 +276,7 @@ namespace AvatarGo.Core
             return Vectors.IsFinite(centre);
         }
 
-        private static string Mm(float metres) => float.IsNaN(metres) ? "n/a" : FormattableString.Invariant($"{metres * 1000:+0.0;-0.0}");
+        private static string Mm(float metres) => float.IsNaN(metres) ? "n/a" : FormattableString.Invariant($"{metres * 1000:+0.0;-0.0;0.0}");
 
         private float Limit(float ratio) => Math.Min(_settings.MaxRatio, Math.Max(_settings.MinRatio, ratio));
 

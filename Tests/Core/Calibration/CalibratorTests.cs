@@ -117,6 +117,25 @@ namespace AvatarGo.Core.Tests
         }
 
         /// <summary>
+        /// An avatar whose eyes lie beyond the height a profile holds (1e4 of its units: 0.13 mm units) is refused at the
+        /// T-pose, naming its eye height, though its scale (1.3e-4) is within range (found in review: it calibrated, then its
+        /// profile could not be saved).
+        /// </summary>
+        [Test]
+        public void AnAvatarWhoseEyesAProfileCannotHoldIsRefusedAtTheTPose()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 210);
+            HumanoidMap avatar = HumanoidNaming.Detect(wearer.Map.Skeleton.Scaled(7600f));
+            var calibrator = new Calibrator(wearer.Devices, avatar);
+            wearer.StandInTPose(RigidPose.Identity);
+            double t = 0;
+            wearer.HoldAndPress(calibrator, ref t, 0.002f, 0.2f);
+            Assert.That(calibrator.State, Is.EqualTo(CalibrationState.WaitingForTPose));
+            Assert.That(calibrator.LastStep.Error, Is.EqualTo(CalibrationError.AvatarScaleOutOfRange));
+            Assert.That(calibrator.LastStep.Message, Does.Contain("eyes are at"));
+        }
+
+        /// <summary>
         /// The walk-in is refused while the wearer stands beside the avatar, not in it (found in review: the offsets took in
         /// however far away the wearer stood, a metre if need be): 0.5 m to the side is refused with the distance named, and
         /// the calibration then completes once the wearer steps in (0.1 m off, as a wearer lines up by eye).

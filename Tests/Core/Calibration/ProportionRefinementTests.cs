@@ -113,6 +113,16 @@ namespace AvatarGo.Core.Tests
                 Assert.That(refined.AllJointsMm.Mean, Is.EqualTo(fitted.AllJointsMm.Mean).Within(0.05), "nothing changed: the same result");
         }
 
+        /// <summary>A residual that rounds to zero reads 0.0, whatever its sign (found in review: "-+0.0").</summary>
+        [Test]
+        public void AResidualThatRoundsToZeroHasNoSign()
+        {
+            var tiny = new LimbRefinement(10, 0.5f, 0.5f - 2e-5f, 0.5f, false);
+            Assert.That(tiny.ToString(), Does.Contain("residual 0.0 -> 0.0 mm"), tiny.ToString());
+            var shorter = new LimbRefinement(10, 0.5f, 0.49f, 0.49f, true);
+            Assert.That(shorter.ToString(), Does.Contain("residual -10.0 -> 0.0 mm"), shorter.ToString());
+        }
+
         /// <summary>Recording a frame allocates nothing.</summary>
         [Test]
         public void RecordingAllocatesNothing()
