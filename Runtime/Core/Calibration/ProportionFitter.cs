@@ -55,7 +55,9 @@ namespace AvatarGo.Core
             AvatarShape uniform = Shape(avatar, BodyProportions.Uniform, s0);
 
             // The proportions the measurement gives, every group free and per side.
-            BodyProportions measured = Solve(avatar, features, BodyProportions.Uniform, s0, true, true, true, out float sm, out AvatarShape m);
+            // How far a grip may sit above or below the avatar's before it says the arms were not level (a hold, a hand).
+            float gripBand = settings.ControllerTolerance + repeatability;
+            BodyProportions measured = Solve(avatar, features, BodyProportions.Uniform, s0, true, true, true, gripBand, out float sm, out AvatarShape m);
             float widthBand = m.ShoulderWidth * legBand / Math.Max(0.1f, features.Eye - features.Hips);
             float armBand = settings.ControllerTolerance + 0.5f * widthBand + repeatability;
 
@@ -85,7 +87,8 @@ namespace AvatarGo.Core
             float dHips = features.Hips - uniform.Features.Hips;
             bool legs = Math.Abs(dHips) > legBand;
             why.Append(FormattableString.Invariant($"legs {(legs ? "refitted" : "kept")}: hip height {dHips * 100:+0.0;-0.0;0.0} cm from the uniform avatar's (uncertainty {legBand * 100:0.0} cm)"));
-            float dLeft = features.LeftReach - uniform.Features.LeftReach, dRight = features.RightReach - uniform.Features.RightReach;
+            float dLeft = LevelReach(uniform, 1f, features, BodySide.Left, gripBand) - uniform.Features.LeftReach;
+            float dRight = LevelReach(uniform, 1f, features, BodySide.Right, gripBand) - uniform.Features.RightReach;
             bool leftArm, rightArm;
             if (settings.PerSide)
             {
@@ -99,12 +102,12 @@ namespace AvatarGo.Core
             float startArm = settings.PerSide ? 1f : 0.5f * (measured.LeftArm + measured.RightArm);
             var start = new BodyProportions(legs ? measured.LeftLeg : 1f, legs ? measured.RightLeg : 1f,
                 leftArm || rightArm ? (settings.PerSide ? measured.LeftArm : startArm) : 1f, leftArm || rightArm ? (settings.PerSide ? measured.RightArm : startArm) : 1f);
-            BodyProportions chosen = Solve(avatar, features, start, sm, legs, leftArm || rightArm, settings.PerSide, out float s, out _);
+            BodyProportions chosen = Solve(avatar, features, start, sm, legs, leftArm || rightArm, settings.PerSide, gripBand, out float s, out _);
             chosen = new BodyProportions(chosen.LeftLeg, chosen.RightLeg, leftArm ? chosen.LeftArm : 1f, rightArm ? chosen.RightArm : 1f);
             var limited = new BodyProportions(Limit(chosen.LeftLeg, settings), Limit(chosen.RightLeg, settings), Limit(chosen.LeftArm, settings), Limit(chosen.RightArm, settings));
             if (!limited.Equals(chosen)) why.Append(FormattableString.Invariant($"; held within {settings.MinRatio:0.00}-{settings.MaxRatio:0.00} of the overall scale ({chosen} measured)"));
             // The overall scale for the ratios kept (a side kept, a ratio limited): the eyes match again.
-            if (!limited.IsUniform) Solve(avatar, features, limited, s, false, false, false, out s, out _);
+            if (!limited.IsUniform) Solve(avatar, features, limited, s, false, false, false, gripBand, out s, out _);
             else s = s0;
             fit.Proportions = limited;
             fit.Scale = s;
@@ -143,7 +146,7 @@ namespace AvatarGo.Core
         // sixteen T-poses. The constant parts (eye offset of a rig without eye bones, the grip's handle radius) are what
         // the model leaves out; the steps that follow take them in.
         private static BodyProportions Solve(HumanoidMap avatar, in BodyFeatures wearer, BodyProportions start, float scale, bool legs, bool arms, bool perSide,
-            out float finalScale, out AvatarShape shape)
+            float gripBand, out float finalScale, out AvatarShape shape)
         {
             BodyProportions p = start;
             float s = scale;
@@ -158,8 +161,8 @@ namespace AvatarGo.Core
                 if (legs) leg = p.LeftLeg * Clamp((wearer.Hips / k - (shape.Features.Hips - legPart)) / legPart);
                 if (arms)
                 {
-                    float l = p.LeftArm * Clamp((wearer.LeftReach / k - (shape.Features.LeftReach - shape.LeftArmReach)) / shape.LeftArmReach);
-                    float r = p.RightArm * Clamp((wearer.RightReach / k - (shape.Features.RightReach - shape.RightArmReach)) / shape.RightArmReach);
+                    float l = p.LeftArm * Clamp((LevelReach(shape, k, wearer, BodySide.Left, gripBand) - (shape.Features.LeftReach - shape.LeftArmReach)) / shape.LeftArmReach);
+                    float r = p.RightArm * Clamp((LevelReach(shape, k, wearer, BodySide.Right, gripBand) - (shape.Features.RightReach - shape.RightArmReach)) / shape.RightArmReach);
                     if (perSide) { la = l; ra = r; }
                     else la = ra = 0.5f * (l + r);
                 }
@@ -173,6 +176,24 @@ namespace AvatarGo.Core
             }
             finalScale = s;
             return p;
+        }
+
+        // The wearer's reach (in the model's units: divided by k) as it would be with the grip at the model's height: the
+        // grip turned about the model's shoulder in the body's frontal plane, keeping its distance from it. A T-pose whose
+        // arms droop (the posture check accepts up to about 18°) shortens the horizontal reach by the droop's cosine, which
+        // read as short arms (found in review: the wearer's own arms, 15° down, fitted 4.8 % short). Only the part of the
+        // height difference beyond gripBand counts: within it, a grip's height says as much about the hold and the model's
+        // shoulder as about the arm (a pelvis strap assumed 2 cm off moves the model's shoulders by millimetres).
+        private static float LevelReach(in AvatarShape shape, float k, in BodyFeatures wearer, BodySide side, float gripBand)
+        {
+            float shoulderOut = 0.5f * shape.ShoulderWidth, shoulderUp = shape.ShoulderHeight;
+            float modelVertical = shape.Features.GripHeight(side) - shoulderUp;
+            float below = wearer.GripHeight(side) / k - shape.Features.GripHeight(side);
+            below = Math.Sign(below) * Math.Max(Math.Abs(below) - gripBand, 0f);
+            float lateral = wearer.Reach(side) / k - shoulderOut, vertical = modelVertical + below;
+            float level = lateral * lateral + vertical * vertical - modelVertical * modelVertical;
+            // A grip nearer the shoulder than the model's grip lies below it: no level equivalent; the horizontal reach.
+            return level > 0f && lateral > 0f ? shoulderOut + MathF.Sqrt(level) : wearer.Reach(side) / k;
         }
 
         // A ratio step is never more than a factor of 2 (a wildly wrong feature cannot flip the avatar inside out).
