@@ -36,21 +36,21 @@ namespace AvatarGo.Core.Tests
                 // What was measured: every group free and per side, so every feature matched; the reach as the grip's distance
                 // from the shoulder in the frontal plane (these wearers hold the grips at the avatar's own height, so a taller
                 // one holds them lower than level: the arm is as long as that distance says, not as the horizontal reach).
-                ProportionFitter.AvatarShape ms = ProportionFitter.Shape(avatar, fit.Measured, fit.MeasuredScale);
+                var ms = ProportionFitter.Shape(avatar, fit.Measured, fit.MeasuredScale);
                 BodyFeatures m = ms.Features;
                 Assert.That(m.Eye, Is.EqualTo(wearer.Eye).Within(2e-5), $"{what}: measured avatar's eyes (m)");
                 Assert.That(m.Hips, Is.EqualTo(wearer.Hips).Within(2e-5), $"{what}: measured avatar's hips (m)");
                 foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
-                    Assert.That(FromShoulder(ms, m, side), Is.EqualTo(FromShoulder(ms, wearer, side, settings.ControllerTolerance)).Within(2e-5), $"{what}: measured avatar's {side} grip from the shoulder (m)");
+                    Assert.That(FromShoulder(ms.ShoulderWidth, ms.ShoulderHeight, m, m, side), Is.EqualTo(FromShoulder(ms.ShoulderWidth, ms.ShoulderHeight, m, wearer, side, settings.ControllerTolerance)).Within(2e-5), $"{what}: measured avatar's {side} grip from the shoulder (m)");
 
                 // What is applied (limits wide enough not to bite): the eyes, the hips, and the reach per side or on average.
                 Assume.That(fit.Explanation, Does.Not.Contain("held within"), what);
-                ProportionFitter.AvatarShape fs = ProportionFitter.Shape(avatar, fit.Proportions, fit.Scale);
+                var fs = ProportionFitter.Shape(avatar, fit.Proportions, fit.Scale);
                 BodyFeatures f = fs.Features;
                 Assert.That(f.Eye, Is.EqualTo(wearer.Eye).Within(2e-5), $"{what}: fitted avatar's eyes (m)");
                 Assert.That(f.Hips, Is.EqualTo(wearer.Hips).Within(2e-5), $"{what}: fitted avatar's hips (m)");
-                float fl = FromShoulder(fs, f, BodySide.Left), fr = FromShoulder(fs, f, BodySide.Right);
-                float wl = FromShoulder(fs, wearer, BodySide.Left, settings.ControllerTolerance), wr = FromShoulder(fs, wearer, BodySide.Right, settings.ControllerTolerance);
+                float fl = FromShoulder(fs.ShoulderWidth, fs.ShoulderHeight, f, f, BodySide.Left), fr = FromShoulder(fs.ShoulderWidth, fs.ShoulderHeight, f, f, BodySide.Right);
+                float wl = FromShoulder(fs.ShoulderWidth, fs.ShoulderHeight, f, wearer, BodySide.Left, settings.ControllerTolerance), wr = FromShoulder(fs.ShoulderWidth, fs.ShoulderHeight, f, wearer, BodySide.Right, settings.ControllerTolerance);
                 // The arms are refitted where the uniform avatar misses the wearer's reach by more than its uncertainty (a kept
                 // side keeps the ratio 1: the last wearer's grips, held lower, are within 1.5 cm of the uniform avatar's).
                 if (perSide)
@@ -66,11 +66,13 @@ namespace AvatarGo.Core.Tests
         // A grip's distance from the avatar's shoulder (the upper arm joint) in the body's frontal plane, from its reach along
         // the shoulder line and its height; a wearer's grip height counts only beyond `band` from the avatar's own grip's
         // (what the fitter reads as arms held below or above level).
-        private static float FromShoulder(in ProportionFitter.AvatarShape shape, in BodyFeatures grips, BodySide side, float band = 0f)
+        // (The avatar's shape is an internal type: not in a declaration here, which the Unity gate's planted-internal test
+        // compiles without InternalsVisibleTo.)
+        private static float FromShoulder(float shoulderWidth, float shoulderHeight, in BodyFeatures avatar, in BodyFeatures grips, BodySide side, float band = 0f)
         {
-            float off = grips.GripHeight(side) - shape.Features.GripHeight(side);
+            float off = grips.GripHeight(side) - avatar.GripHeight(side);
             off = Math.Sign(off) * Math.Max(Math.Abs(off) - band, 0f);
-            float lateral = grips.Reach(side) - 0.5f * shape.ShoulderWidth, vertical = shape.Features.GripHeight(side) + off - shape.ShoulderHeight;
+            float lateral = grips.Reach(side) - 0.5f * shoulderWidth, vertical = avatar.GripHeight(side) + off - shoulderHeight;
             return MathF.Sqrt(lateral * lateral + vertical * vertical);
         }
     }
