@@ -442,7 +442,7 @@ namespace AvatarGo.Core
             float dt = (float)_clock.LastStep;
             _window.Add(now, samples);
             // Bad samples out, lost devices' parts held and eased, returning ones blended back; without the HMD, freeze.
-            _sanitizer.Filter(now, samples, _accepted);
+            _sanitizer.Filter(now, _clock.RegularStep, samples, _accepted);
             _smoothing?.Apply(now, _accepted);
             if (!_continuity.Apply(now, _accepted, _pose, _effective))
             {

@@ -17,6 +17,16 @@ namespace AvatarGo.Core
 
         private double _lastTime = double.NaN;
         private double _regularStep = 1.0 / 90.0;
+        private int _earlyFrames;                   // frames in a row stamped before the latest time
+
+        /// <summary>
+        /// How many frames in a row may be stamped before the latest time (each counted as no time) before the clock is
+        /// taken to have really gone back and is followed from there: 3.
+        /// </summary>
+        public const int EarlyFramesBeforeRebase = 3;
+
+        /// <summary>The last regular step between frames (s): what one frame takes.</summary>
+        public double RegularStep => _regularStep;
 
         /// <summary>The clock after the last <see cref="Advance"/> (NaN before the first).</summary>
         public double Now { get; private set; } = double.NaN;
@@ -38,7 +48,13 @@ namespace AvatarGo.Core
             if (raw > 0.0 && raw <= MaxStepSeconds) _regularStep = raw;
             // A frame stamped slightly early does not move the time the next one is measured from: measured from it, the
             // next step would include what this one went back (a wider glitch filter, a clock gaining that much for good).
-            if (raw >= 0.0 || raw < -MaxStepSeconds) _lastTime = time;
+            // Several in a row are a clock that went back for good: followed from there (it would stand still for as long).
+            _earlyFrames = raw < 0.0 && raw >= -MaxStepSeconds ? _earlyFrames + 1 : 0;
+            if (_earlyFrames == 0 || _earlyFrames >= EarlyFramesBeforeRebase)
+            {
+                _lastTime = time;
+                _earlyFrames = 0;
+            }
             Now = double.IsNaN(Now) ? time : Now + step;
             LastStep = step;
             return Now;

@@ -52,5 +52,19 @@ namespace AvatarGo.Core.Tests
             var jumped = new RigidPose(new Vector3(0.1f, 1.6f, 0f), Quaternion.Identity);
             Assert.That(sanitizer.Filter(1.0, new[] { new DeviceSample(jumped, true) }, accepted), Is.EqualTo(1), "10 cm at the same time");
         }
+
+        [Test]
+        public void WithTheFramesStepAFrameWithoutTimeCarriesOneFramesMotion()
+        {
+            var sanitizer = new SampleSanitizer(1, 0, new[] { -1f }, new TrackingSettings());
+            var accepted = new DeviceSample[1];
+            Assert.That(sanitizer.Filter(1.0, 1 / 90.0, new[] { new DeviceSample(Moving(0, 0), true) }, accepted), Is.EqualTo(0));
+            // 5 cm in a frame stamped at the same time: 4.5 m/s at 90 Hz, a hand's swing.
+            var swung = new RigidPose(new Vector3(0.05f, 1.6f, 0f), Quaternion.Identity);
+            Assert.That(sanitizer.Filter(1.0, 1 / 90.0, new[] { new DeviceSample(swung, true) }, accepted), Is.EqualTo(0), "one frame's motion");
+            // 40 cm is beyond 20 m/s over one frame (22 cm + 2 cm).
+            var jumped = new RigidPose(new Vector3(0.45f, 1.6f, 0f), Quaternion.Identity);
+            Assert.That(sanitizer.Filter(1.0, 1 / 90.0, new[] { new DeviceSample(jumped, true) }, accepted), Is.EqualTo(1), "a jump");
+        }
     }
 }
