@@ -6,7 +6,8 @@ namespace AvatarGo.Core
     /// The time that measurements between frames run on (speeds, holds and eases, averaging windows, the spacing of presses):
     /// it follows the frames' times while they run forward in regular steps, and counts a step longer than
     /// <see cref="MaxStepSeconds"/> either way (a clock that jumps ahead or restarts, one frame stamped with a time from long
-    /// before) as the last regular step, and a repeated, slightly earlier or non-finite time as none. A recording's clock
+    /// before) as the last regular step, and a repeated, slightly earlier or non-finite time as none (and
+    /// <see cref="EarlyFramesBeforeRebase"/> earlier ones in a row as a clock that went back, followed from there). A recording's clock
     /// that jumps would otherwise hold a lost part until it came back, ease it in one frame, open the glitch filter by the
     /// jump's length, or ignore presses for as long as it had gone back.
     /// </summary>
