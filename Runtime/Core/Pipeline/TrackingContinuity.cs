@@ -237,6 +237,8 @@ namespace AvatarGo.Core
 
         private void Decay(RoleState s, float dt)
         {
+            // In no time nothing moves (and an infinite speed limit times 0 would be NaN).
+            if (!(dt > 0f)) return;
             float keep = (float)Math.Exp(-dt / Math.Max(_settings.RecoveryTimeConstant, 1e-4f));
             float d = s.OffsetPosition.Length();
             float next = Math.Max(d * keep, d - _settings.RecoveryMaxSpeed * dt);

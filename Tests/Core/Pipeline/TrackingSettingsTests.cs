@@ -52,6 +52,40 @@ namespace AvatarGo.Core.Tests
             Assert.Throws<TargetInvocationException>(() => p.SetValue(new TrackingSettings(), 0f));
         }
 
+        /// <summary>
+        /// Infinity turns a recovery speed limit off, and a repeated frame time while a part is blended back leaves it where
+        /// it was (found in review: infinity times no time was NaN, and the hand's sample NaN).
+        /// </summary>
+        [Test]
+        public void AnInfiniteRecoverySpeedAndARepeatedTimeGiveNoNaN()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 64);
+            double t = 0;
+            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map);
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            Assume.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated));
+            var settings = new TrackingSettings { RecoveryMaxSpeed = float.PositiveInfinity, RecoveryMaxAngularSpeedDegrees = float.PositiveInfinity };
+            var roles = new PerRole<int>(-1);
+            foreach (DeviceRole role in BodyRoles.All) roles[role] = pipeline.DeviceIndexOf(role);
+            var continuity = new TrackingContinuity(pipeline.Profile, roles, pipeline.ScaledAvatar, pipeline.Pose, settings);
+            var samples = new DeviceSample[6];
+            var effective = new DeviceSample[6];
+            int hand = pipeline.DeviceIndexOf(DeviceRole.LeftHand);
+            wearer.Sample(samples, 0f, 0f);
+            continuity.Apply(10.0, samples, pipeline.Pose, effective);
+            var lost = (DeviceSample[])samples.Clone();
+            lost[hand] = new DeviceSample(samples[hand].Pose, false);
+            continuity.Apply(10.1, lost, pipeline.Pose, effective);
+            var back = (DeviceSample[])samples.Clone();
+            back[hand] = new DeviceSample(new RigidPose(samples[hand].Pose.Position + new System.Numerics.Vector3(0.1f, 0f, 0f),
+                Rotations.AngleAxis(30f, System.Numerics.Vector3.UnitY) * samples[hand].Pose.Rotation), true);
+            continuity.Apply(10.2, back, pipeline.Pose, effective);
+            RigidPose blended = effective[hand].Pose;
+            continuity.Apply(10.2, back, pipeline.Pose, effective); // the same time again
+            Assert.That(effective[hand].Pose.IsValid, Is.True, effective[hand].Pose.ToString());
+            Approx.Near(blended, effective[hand].Pose, 1e-6f, 1e-3f, "no time, no move");
+        }
+
         [Test]
         public void TheFiltersErrorsNameTheirOwnParameter()
         {
