@@ -21,8 +21,10 @@ namespace AvatarGo.Core
         private float _handsInverted, _handsMisplaced, _feetInverted;
         private bool _handsReported, _feetReported;   // reported and still swapped: not reported again
 
-        // A reported pair is reported again only after its inversion has faded below this (the devices were put back).
-        private const float ReportAgainBelow = 0.1f;
+        // A reported pair is reported again only after its inversion has faded below this (the devices were put back): half,
+        // about 0.7 s put back with the 3 s window (at 0.1 it took 2.3 s, and a swap made again sooner was never reported);
+        // rising to 0.9 again takes 1.6 s of steady inversion, so crossing the legs for a moment is not reported.
+        private const float ReportAgainBelow = 0.5f;
 
         /// <summary>
         /// Creates a detector. <paramref name="hipsRightLocal"/> is the hips joint's local axis that pointed to the wearer's
