@@ -98,10 +98,11 @@ namespace AvatarGo.Core
                 boneOfNode[node] = b;
                 for (int k = node; k >= 0 && !keep[k]; k = nodes[k].Parent) keep[k] = true;
             }
-            // The end points after the last finger and toe bones and the head: the finger model's tips, the T-pose's floor
-            // contact, the crown that stands the head up (found in review: without Mixamo's HeadTop_End the bound avatar kept
-            // its bind pose's head, and its eyes 3 cm lower scaled it 1.8 % too tall: the hands 26 mm off their controllers).
+            // The end points after the last finger and toe bones, and the head's crown: the finger model's tips, the T-pose's
+            // floor contact, what stands the head up (found in review: without Mixamo's HeadTop_End the bound avatar kept its
+            // bind pose's head, and its eyes 3 cm lower scaled it 1.8 % too tall: the hands 26 mm off their controllers).
             foreach (HumanoidBone bone in TipParents) KeepChildrenAsEndSites(nodes, boneNodes[(int)bone], keep, endSite);
+            // (Which of the head's children is its crown, if any, is the T-pose's to tell: TPoser reads their names.)
             KeepChildrenAsEndSites(nodes, boneNodes[(int)HumanoidBone.Head], keep, endSite);
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
             {

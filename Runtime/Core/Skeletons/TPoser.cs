@@ -473,11 +473,27 @@ namespace AvatarGo.Core
                 if (s.GetParent(c) == crown) return -1;
             // The name without its namespace ("Clip:", "Bear:" and "Machine:" hold face words). An End Site's name is only its
             // parent's (the head's) with "_End": nothing to read in it, its length decides.
-            string name = s.GetName(crown);
-            name = name.Substring(name.LastIndexOf(':') + 1).ToLowerInvariant();
-            if (!s.IsEndSite(crown) && (!ContainsAny(name, HeadTopWords) || ContainsAny(name, FaceWords))) return -1;
+            // A BVH End Site's name is made from its parent's (the head's, "_End" after it): nothing to read in it, its length
+            // decides. Any other name is read, an engine's end point's too (a hat socket or a ponytail's root kept as the end
+            // of a bound hierarchy turned an eyeless head 67°: a second review).
+            if (!IsMadeEndSiteName(s, crown) && !NamedAsHeadTop(s.GetName(crown))) return -1;
             float neck = Vector3.Distance(At(pose, head), At(pose, below));
             return s.GetRestLocal(crown).Position.Length() >= 0.5f * neck ? crown : -1;
+        }
+
+        // An End Site named as the BVH reader names them: its parent's name and "_End" (with a number when there are several).
+        private static bool IsMadeEndSiteName(Skeleton s, int joint) =>
+            s.IsEndSite(joint) && s.GetName(joint).StartsWith(s.GetName(s.GetParent(joint)) + "_End", StringComparison.Ordinal);
+
+        /// <summary>
+        /// True for a joint named as the top of a head (top, end, nub, tip, crown) and like nothing on the face or hair, its
+        /// namespace aside ("Clip:", "Bear:" and "Machine:" hold face words): Mixamo's HeadTop_End, a "Head_Nub".
+        /// </summary>
+        internal static bool NamedAsHeadTop(string name)
+        {
+            if (string.IsNullOrEmpty(name)) return false;
+            name = name.Substring(name.LastIndexOf(':') + 1).ToLowerInvariant();
+            return ContainsAny(name, HeadTopWords) && !ContainsAny(name, FaceWords);
         }
 
         private static readonly string[] HeadTopWords = { "top", "end", "nub", "tip", "crown" };

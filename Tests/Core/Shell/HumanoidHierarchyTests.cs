@@ -92,6 +92,59 @@ namespace AvatarGo.Core.Tests
             for (int f = 0; f < 5; f++) Approx.Near(own.TipLocal[f], bound.TipLocal[f], 1e-5f, "finger " + f + "'s tip");
         }
 
+        /// <summary>
+        /// A child of an eyeless head that is not a crown (a ponytail's root with its chain, a hat's socket, a face rig's root) is
+        /// not taken for the crown, bound by bones or by names: the T-pose's head is the same both ways (a second review: kept
+        /// as an end site, its name was no longer read, and the head turned 67°; bound by names, a childless one was taken too).
+        /// </summary>
+        [TestCase("Ponytail", true), TestCase("HatSocket", false), TestCase("FaceRoot_End", false)]
+        public void AChildOfTheHeadThatIsNoCrownIsNotTakenForIt(string name, bool chain)
+        {
+            HumanoidMap mocap = Mocap("mocapbank_30fps.bvh");
+            EngineHierarchy engine = EngineHierarchy.FromSkeleton(mocap, Quaternion.Identity, 1f);
+            int head = engine.BoneNodes[(int)HumanoidBone.Head], top = -1;
+            for (int n = 0; n < engine.Names.Count; n++)
+                if (engine.Parents[n] == head) top = n;
+            Assume.That(top, Is.GreaterThan(0), "MocapBank's head has its End Site");
+            float length = engine.LocalPositions[top].Length();
+            engine.Names[top] = name;
+            engine.LocalPositions[top] = Vector3.Normalize(new Vector3(0f, 1f, -1f)) * length; // up and back
+            if (chain) engine.Add(name + ".001", top, new Vector3(0f, -0.05f, -0.05f), Quaternion.Identity);
+            HierarchyNode[] nodes = engine.Read();
+            Assert.That(HumanoidHierarchy.TryFromBones(nodes, engine.BoneNodes, 1f, out HumanoidHierarchy bound, out string error), Is.True, error);
+            Assert.That(HumanoidHierarchy.TryFromNames(nodes, 1f, out HumanoidHierarchy named, out error), Is.True, error);
+            // The reference: the same hierarchy without that child (and its chain), whose head has no crown.
+            var without = new List<HierarchyNode>();
+            var index = new int[nodes.Length];
+            for (int n = 0; n < nodes.Length; n++)
+            {
+                index[n] = -1;
+                if (n == top || (nodes[n].Parent >= 0 && index[nodes[n].Parent] < 0 && n > top && IsBelow(nodes, n, top))) continue;
+                HierarchyNode node = nodes[n];
+                index[n] = without.Count;
+                without.Add(new HierarchyNode(node.Name, node.Parent < 0 ? -1 : index[node.Parent], node.LocalPosition, node.LocalRotation, node.LocalScale));
+            }
+            var bones = new int[engine.BoneNodes.Length];
+            for (int b = 0; b < bones.Length; b++) bones[b] = engine.BoneNodes[b] < 0 ? -1 : index[engine.BoneNodes[b]];
+            Assert.That(HumanoidHierarchy.TryFromBones(without, bones, 1f, out HumanoidHierarchy crownless, out error), Is.True, error);
+            Quaternion Head(HumanoidMap map)
+            {
+                var pose = new SkeletonPose(map.Skeleton);
+                TPoser.Apply(map, pose, RigidPose.Identity);
+                return pose.World[map[HumanoidBone.Head]].Rotation;
+            }
+            Quaternion reference = Head(crownless.Map);
+            Assert.That(Rotations.AngleDegrees(Head(bound.Map), reference), Is.LessThan(0.1f), "bound by bones: the T-pose's head as without that child (degrees)");
+            Assert.That(Rotations.AngleDegrees(Head(named.Map), reference), Is.LessThan(0.1f), "bound by names (degrees)");
+        }
+
+        private static bool IsBelow(IReadOnlyList<HierarchyNode> nodes, int node, int ancestor)
+        {
+            for (int k = nodes[node].Parent; k >= 0; k = nodes[k].Parent)
+                if (k == ancestor) return true;
+            return false;
+        }
+
         [Test]
         public void NamesThatRepeatAreMadeUnique()
         {
