@@ -249,10 +249,17 @@ namespace AvatarGo.Core
         {
             if (_mapper == null) return false;
             _refinement = new ProportionRefinement(_calibrator.ScaledAvatar, _calibrator.Profile.Proportions, Settings.Calibration.Proportions, capacity,
-                HandleRadius(Settings.Hand(BodySide.Left).Controller), HandleRadius(Settings.Hand(BodySide.Right).Controller));
+                HandleRadius(AppliedController(BodySide.Left) ?? Settings.Hand(BodySide.Left).Controller),
+                HandleRadius(AppliedController(BodySide.Right) ?? Settings.Hand(BodySide.Right).Controller));
             _refinement.Begin();
             return true;
         }
+
+        // The controller the hand's settings were last applied with (its finger solver's), not the setting as it is now: a
+        // setting changed or cleared takes effect at ApplyHandSettings or the next calibration, not at a swap or a re-measured
+        // device (found in review: cleared, the next swap threw; changed, the wrist moved onto the new controller's grip while
+        // the fingers still closed on the old one).
+        private ControllerProfile AppliedController(BodySide side) => _fingers[(int)side]?.Profile;
 
         private static float HandleRadius(ControllerProfile controller) =>
             controller != null ? -controller.Shape.Distance(Vector3.Zero) : ProportionFitter.DefaultHandleRadius;
@@ -383,7 +390,7 @@ namespace AvatarGo.Core
             CalibrationProfile active = Settings.Offsets == OffsetMode.Fixed ? _measured.WithFixedOffsets() : _measured;
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
                 if (_handStates[(int)side].Placement == HandPlacement.PalmOnController)
-                    active = active.WithJointInDevice(BodyRoles.Hand(side), _hands[(int)side].WristInController(Settings.Hand(side).Controller));
+                    active = active.WithJointInDevice(BodyRoles.Hand(side), _hands[(int)side].WristInController(AppliedController(side)));
             ActiveProfile = active;
             foreach (DeviceRole role in BodyRoles.All)
                 for (int d = 0; d < _devices.Length; d++)

@@ -125,6 +125,34 @@ namespace AvatarGo.Core.Tests
         }
 
         /// <summary>
+        /// A hand's controller setting changed or cleared after calibration takes effect at ApplyHandSettings, not at a swap
+        /// or a re-measured device (found in review: cleared, the next swap, which Update itself makes when it finds one, threw;
+        /// changed to the Quest controller, the wrist moved 2.5 mm onto its grip while the fingers closed on the VIVE wand).
+        /// </summary>
+        [TestCase(false), TestCase(true)]
+        public void AControllerSettingNotYetAppliedIsNotTakenByASwapOrARemeasure(bool cleared)
+        {
+            ControllerProfile Profile(string name) => ControllerProfile.Parse(System.IO.File.ReadAllText(TestData.InPackage("Runtime/ControllerProfiles/" + name + ".json")));
+            var settings = new PipelineSettings();
+            settings.LeftHand.Controller = settings.RightHand.Controller = Profile("vive-wand");
+            var wearer = new Wearer("mixamo_fingers_30fps.bvh", 61);
+            double t = 0;
+            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map, settings);
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            Assume.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated));
+            Assume.That(pipeline.Hand(BodySide.Left).HasFingerIk, Is.True);
+            RigidPose wrist = pipeline.ActiveProfile.JointInDevice(DeviceRole.LeftHand);
+            Stand(wearer, pipeline, ref t, 1.0, null);
+            settings.LeftHand.Controller = cleared ? null : Profile("quest-touch");
+            Assert.That(pipeline.SwapDevices(DeviceRole.LeftFoot, DeviceRole.RightFoot), Is.True);
+            Assert.That(pipeline.RecalibrateDevice(DeviceRole.RightFoot, out string reason), Is.True, reason);
+            Assert.That(Vector3.Distance(pipeline.ActiveProfile.JointInDevice(DeviceRole.LeftHand).Position, wrist.Position), Is.LessThan(1e-5f), "the wrist on the wand's grip (m)");
+            Assert.That(pipeline.Hand(BodySide.Left).HasFingerIk, Is.True, "the fingers still on the wand");
+            pipeline.ApplyHandSettings();
+            Assert.That(pipeline.Hand(BodySide.Left).HasFingerIk, Is.EqualTo(!cleared), "applied: the new setting");
+        }
+
+        /// <summary>
         /// A swap only reported is reported once while it stays, and again once it was put back and made again (found in
         /// review: the feet swapped for 20 s were reported 8 times, each counted by the session evaluator as a new swap).
         /// </summary>
