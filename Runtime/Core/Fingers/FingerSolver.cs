@@ -161,10 +161,47 @@ namespace AvatarGo.Core
             for (int f = 0; f < 5; f++)
             {
                 float blend = mode != GripMode.InputDriven ? 1f : f == 1 ? v : g;
-                for (int k = 0; k < 3; k++) _t[f * 3 + k] = _solved[f * 3 + k] * blend;
+                // A finger released only part of the way opens no further than the controller lets it: the open hand (the
+                // T-pose's) may lie inside the controller held in it (found in review: the thumb's last joint 4.4 mm deep in
+                // the VIVE wand at grip 0, the Unity component's default mode), the solved grip does not.
+                if (blend < 1f && _hand.HasFinger[f] && Penetrates(f, blend)) blend = LeastBlendOutside(f, blend);
+                SetBlend(f, blend);
             }
-            _t[FingerParameters.ThumbSpreadIndex] = _solved[FingerParameters.ThumbSpreadIndex] * (mode != GripMode.InputDriven ? 1f : g);
         }
+
+        private void SetBlend(int f, float blend)
+        {
+            for (int k = 0; k < 3; k++) _t[f * 3 + k] = _solved[f * 3 + k] * blend;
+            if (f == 0) _t[FingerParameters.ThumbSpreadIndex] = _solved[FingerParameters.ThumbSpreadIndex] * blend;
+        }
+
+        // Whether finger f, blended `blend` of the way from open to the solved grip, has a point inside the controller (more
+        // than the solved grip may: PenetrationTolerance).
+        private bool Penetrates(int f, float blend)
+        {
+            int o = f * 3;
+            var t = new Vector4(_solved[o] * blend, _solved[o + 1] * blend, _solved[o + 2] * blend, f == 0 ? _solved[FingerParameters.ThumbSpreadIndex] * blend : 0f);
+            Chain(f, t, out _, out RigidPose w1, out RigidPose w2);
+            return _profile.Shape.Distance(w1.Position) - _hand.FingerRadius < -PenetrationTolerance
+                || _profile.Shape.Distance(w2.Position) - _hand.FingerRadius < -PenetrationTolerance
+                || _profile.Shape.Distance(w2.TransformPoint(_hand.TipLocal[f])) - _hand.FingerRadius < -PenetrationTolerance;
+        }
+
+        // The least blend above `from` at which finger f is outside the controller, to 1/256 of the way (bisection: the
+        // solved grip, blend 1, is outside).
+        private float LeastBlendOutside(int f, float from)
+        {
+            float inside = from, outside = 1f;
+            for (int i = 0; i < 8; i++)
+            {
+                float mid = 0.5f * (inside + outside);
+                if (Penetrates(f, mid)) inside = mid; else outside = mid;
+            }
+            return outside;
+        }
+
+        // How deep a blended finger point may lie inside the controller: what the descent leaves (0.01 mm) and then some.
+        private const float PenetrationTolerance = 1e-4f;
 
         /// <summary>
         /// The signed distance (m) from the controller's surface to the skin at a finger point after the last solve.

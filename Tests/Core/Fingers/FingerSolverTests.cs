@@ -211,6 +211,50 @@ namespace AvatarGo.Core.Tests
             }
         }
 
+        /// <summary>
+        /// A grip released part or all of the way (InputDriven below 1, the Unity component's default mode) keeps every finger
+        /// out of the controller, on the Mixamo hand in its T-pose and the reference hands of three sizes, every profile, both
+        /// hands (found in review: the open hand's thumb lay 4.2–4.7 mm inside the Mixamo hand's controller, the reference
+        /// hands' 11–24 mm at grip 0); a finger outside at its share of the grip keeps that share.
+        /// </summary>
+        [Test]
+        public void AGripReleasedPartOfTheWayStaysOutOfTheController()
+        {
+            float worst = 0f;
+            string where = "";
+            foreach (string rig in new[] { "mixamo", "reference", "small", "large" })
+                foreach (ControllerProfile profile in Profiles())
+                    foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
+                    {
+                        HumanoidMap map = rig == "mixamo" ? MixamoHand() : ReferenceHandRig.Build(rig == "small" ? 0.85f : rig == "large" ? 1.15f : 1f);
+                        var pose = new SkeletonPose(map.Skeleton); // the open hand: the T-pose's (the pipeline's), the reference hands' rest
+                        if (rig == "mixamo") TPoser.Apply(map, pose, RigidPose.Identity); else pose.ResetToRest();
+                        var model = new HandModel(map, side, pose);
+                        var solver = new FingerSolver(model, profile);
+                        RigidPose held = model.ControllerInHand(profile);
+                        solver.Solve(RigidPose.Identity, held, GripMode.Hold);
+                        float[] hold = solver.Parameters.ToArray();
+                        for (int gi = 0; gi <= 20; gi++)
+                        {
+                            float g = gi / 20f;
+                            solver.Solve(RigidPose.Identity, held, GripMode.InputDriven, g, g);
+                            for (Finger f = Finger.Thumb; f <= Finger.Little; f++)
+                            {
+                                if (!model.Has(f)) continue;
+                                for (FingerPoint q = FingerPoint.IntermediateJoint; q <= FingerPoint.Tip; q++)
+                                {
+                                    float d = solver.SurfaceGap(f, q);
+                                    if (-d > worst) { worst = -d; where = $"{rig} {profile.Name} {side} grip {g:F2} {f} {q}: {d * 1000:F2} mm"; }
+                                }
+                                // Never more closed than the grip asks unless the controller is in the way, never past the hold.
+                                float share = solver.Parameters[f, Phalanx.Intermediate], full = hold[(int)f * 3 + 1];
+                                Assert.That(share, Is.InRange(Math.Min(g * full, full) - 1e-6f, Math.Max(g * full, full) + 1e-6f), $"{rig} {profile.Name} {side} grip {g} {f}");
+                            }
+                        }
+                    }
+            Assert.That(worst, Is.LessThanOrEqualTo(1e-4f), "the deepest finger point (m): " + where);
+        }
+
         [Test]
         public void PointingAndInputDrivenGrips()
         {
