@@ -21,7 +21,8 @@ public sealed class FingersCommand : ICommand
 
         Holds each controller profile (Runtime/ControllerProfiles/*.json) in both hands of each avatar
         hand (default: the reference hand built in code, ReferenceHandRig, and the Mixamo hand of the
-        clip mixamo_fingers_30fps.bvh the package ships in Tests/Core/Data~) while the controller wobbles in
+        clip mixamo_fingers_30fps.bvh the package ships in Tests/Core/Data~; a BVH rig's hand opened as the
+        pipeline opens it, from its calibration T-pose) while the controller wobbles in
         the hand for two seconds (2 mm, 3 deg), solving at 72,
         90 and 144 Hz, and reports per profile and hand: the deepest penetration of a finger into the
         surface (mm), the median and largest fingertip gap (mm), iterations and microseconds per frame
@@ -78,7 +79,11 @@ public sealed class FingersCommand : ICommand
 
     private static Dictionary<string, object> Measure(HumanoidMap rig, bool left, ControllerProfile profile)
     {
-        var hand = new HandModel(rig, left ? BodySide.Left : BodySide.Right);
+        // The open hand the pipeline uses: a humanoid's calibration T-pose (its relaxed fingers); a hand-only rig's rest.
+        var pose = new SkeletonPose(rig.Skeleton);
+        if (rig.IsComplete) TPoser.Apply(rig, pose, RigidPose.Identity);
+        else pose.ResetToRest();
+        var hand = new HandModel(rig, left ? BodySide.Left : BodySide.Right, pose);
         RigidPose inHand = hand.ControllerInHand(profile);
         int[] rates = { 72, 90, 144 };
         var finals = new float[rates.Length][];

@@ -4,7 +4,7 @@ using NUnit.Framework;
 
 namespace AvatarGo.Tools.Tests;
 
-public class FingersCommandTests
+public class FingersCommandTests : TempFolderTests
 {
     [Test]
     public void ReportsEveryProfileAndHandWithoutAllocatingPerFrame()
@@ -35,6 +35,29 @@ public class FingersCommandTests
             Assert.That(row.GetProperty("index_to_trigger_median_mm").GetDouble(), Is.LessThanOrEqualTo(30.0), what);
         }
         Assert.That(rows, Is.EqualTo(6), "three profiles, two hands");
+    }
+
+    /// <summary>
+    /// A BVH rig's hand is measured as the pipeline opens it, from its calibration T-pose: the same clip with every joint's
+    /// rest frame at random gives the same figures (found in review: the command measured the rest pose's hand, whose thumb
+    /// lay 8.2 mm from the VIVE wand's rest where the pipeline's lies 1.2 mm, and which a rest convention changes).
+    /// </summary>
+    [Test]
+    public void ABvhHandIsMeasuredInItsTPoseWhateverItsRest()
+    {
+        string clip = Paths.Mocap("mixamo_fingers_30fps.bvh"), random = System.IO.Path.Combine(Dir, "random.bvh");
+        Assert.That(CliRunner.Run("bvh", "rebase", clip, random, "--rest", "random", "--seed", "2").ExitCode, Is.EqualTo(0));
+        JsonElement Rows(string file)
+        {
+            var r = CliRunner.Run("fingers", "--json", "--profile", "vive-wand", "--hand", file);
+            Assert.That(r.ExitCode, Is.EqualTo(0), r.Stderr);
+            return JsonDocument.Parse(r.Stdout).RootElement.GetProperty("results").Clone();
+        }
+        JsonElement own = Rows(clip), rebased = Rows(random);
+        Assert.That(rebased.GetArrayLength(), Is.EqualTo(own.GetArrayLength()));
+        for (int i = 0; i < own.GetArrayLength(); i++)
+            foreach (string figure in new[] { "thumb_to_rest_median_mm", "index_to_trigger_median_mm", "tip_gap_median_mm", "thumb_gap_median_mm", "max_penetration_mm" })
+                Assert.That(rebased[i].GetProperty(figure).GetDouble(), Is.EqualTo(own[i].GetProperty(figure).GetDouble()).Within(0.1), figure + " " + own[i].GetProperty("hand").GetString());
     }
 
     [Test]
