@@ -12,15 +12,6 @@ namespace AvatarGo.Core.Tests
     /// </summary>
     public class DroopedTPoseTests
     {
-        private static void Turn(Wearer w, HumanoidBone bone, Vector3 axis, float degrees)
-        {
-            int j = w.Map[bone];
-            int parent = w.Map.Skeleton.GetParent(j);
-            Quaternion world = Rotations.AngleAxis(degrees, axis) * w.Pose.World[j].Rotation;
-            w.Pose.Local[j] = w.Pose.Local[j].WithRotation(Quaternion.Conjugate(w.Pose.World[parent].Rotation) * world);
-            w.Pose.UpdateWorld();
-        }
-
         [TestCase("mocapbank_30fps.bvh", 0f), TestCase("mocapbank_30fps.bvh", 8f), TestCase("mocapbank_30fps.bvh", 15f),
          TestCase("mixamo_fingers_30fps.bvh", 8f), TestCase("rigify_6channel_24fps_first240.bvh", 5f)]
         public void ArmsHeldALittleLowAreMeasuredAtTheirLength(string clip, float droopDegrees)
@@ -35,8 +26,8 @@ namespace AvatarGo.Core.Tests
                 HumanoidBone upperArm = HumanoidBones.OnSide(HumanoidBone.LeftUpperArm, side);
                 int hand = wearer.Map[HumanoidBones.OnSide(HumanoidBone.LeftHand, side)];
                 float level = wearer.Pose.World[hand].Position.Y;
-                Turn(wearer, upperArm, Vector3.UnitZ, droopDegrees);
-                if (wearer.Pose.World[hand].Position.Y > level) Turn(wearer, upperArm, Vector3.UnitZ, -2f * droopDegrees);
+                wearer.Turn(upperArm, Vector3.UnitZ, droopDegrees);
+                if (wearer.Pose.World[hand].Position.Y > level) wearer.Turn(upperArm, Vector3.UnitZ, -2f * droopDegrees);
                 Assert.That(wearer.Pose.World[hand].Position.Y, Is.LessThanOrEqualTo(level + 1e-5f), side + " hand lowered");
             }
             var calibrator = new Calibrator(wearer.Devices, wearer.Map, settings);

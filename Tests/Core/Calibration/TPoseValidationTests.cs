@@ -32,15 +32,6 @@ namespace AvatarGo.Core.Tests
             return calibrator.LastStep.Error;
         }
 
-        private static void Turn(Wearer w, HumanoidBone bone, Vector3 axis, float degrees)
-        {
-            int j = w.Map[bone];
-            int parent = w.Map.Skeleton.GetParent(j);
-            Quaternion world = Rotations.AngleAxis(degrees, axis) * w.Pose.World[j].Rotation;
-            w.Pose.Local[j] = w.Pose.Local[j].WithRotation(Quaternion.Conjugate(w.Pose.World[parent].Rotation) * world);
-            w.Pose.UpdateWorld();
-        }
-
         private static int Index(DeviceRole role) => Array.IndexOf(Wearer.TrueRoles, role);
 
         private static void Move(DeviceSample[] s, DeviceRole role, Vector3 by) =>
@@ -63,22 +54,22 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void ArmsLoweredToAnAPose() => Assert.That(Calibrate(pose: w =>
         {
-            Turn(w, HumanoidBone.LeftUpperArm, Vector3.UnitZ, 40f);
-            Turn(w, HumanoidBone.RightUpperArm, Vector3.UnitZ, -40f);
+            w.Turn(HumanoidBone.LeftUpperArm, Vector3.UnitZ, 40f);
+            w.Turn(HumanoidBone.RightUpperArm, Vector3.UnitZ, -40f);
         }), Is.EqualTo(CalibrationError.ArmsNotLevel));
 
         [Test]
         public void ArmsForwardNotSpread() => Assert.That(Calibrate(pose: w =>
         {
-            Turn(w, HumanoidBone.LeftUpperArm, Vector3.UnitY, 90f);
-            Turn(w, HumanoidBone.RightUpperArm, Vector3.UnitY, -90f);
+            w.Turn(HumanoidBone.LeftUpperArm, Vector3.UnitY, 90f);
+            w.Turn(HumanoidBone.RightUpperArm, Vector3.UnitY, -90f);
         }), Is.EqualTo(CalibrationError.ArmsNotSpread));
 
         [Test]
-        public void HeadTilted() => Assert.That(Calibrate(pose: w => Turn(w, HumanoidBone.Head, Vector3.UnitX, 40f)), Is.EqualTo(CalibrationError.HeadNotUpright));
+        public void HeadTilted() => Assert.That(Calibrate(pose: w => w.Turn(HumanoidBone.Head, Vector3.UnitX, 40f)), Is.EqualTo(CalibrationError.HeadNotUpright));
 
         [Test]
-        public void LookingSideways() => Assert.That(Calibrate(pose: w => Turn(w, HumanoidBone.Head, Vector3.UnitY, 70f)), Is.EqualTo(CalibrationError.NotFacingPlane));
+        public void LookingSideways() => Assert.That(Calibrate(pose: w => w.Turn(HumanoidBone.Head, Vector3.UnitY, 70f)), Is.EqualTo(CalibrationError.NotFacingPlane));
 
         /// <summary>
         /// The refusals of the head and the body plane say what was measured (found in review: four different failures of
@@ -87,8 +78,8 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void HeadAndPlaneRefusalsSayWhatWasMeasured()
         {
-            Assert.That(CalibrateMessage(pose: w => Turn(w, HumanoidBone.Head, Vector3.UnitX, 40f)), Does.Contain("the headset tilted"));
-            Assert.That(CalibrateMessage(pose: w => Turn(w, HumanoidBone.Head, Vector3.UnitY, 70f)), Does.Contain("away from where the headset looks"));
+            Assert.That(CalibrateMessage(pose: w => w.Turn(HumanoidBone.Head, Vector3.UnitX, 40f)), Does.Contain("the headset tilted"));
+            Assert.That(CalibrateMessage(pose: w => w.Turn(HumanoidBone.Head, Vector3.UnitY, 70f)), Does.Contain("away from where the headset looks"));
             // Seated: the feet 0.45 m forward, a little lower.
             Assert.That(CalibrateMessage(samples: (i, s) =>
             {

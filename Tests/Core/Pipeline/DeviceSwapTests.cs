@@ -109,15 +109,22 @@ namespace AvatarGo.Core.Tests
             Assert.That(ankle, Is.LessThan(0.01f), "the ankles are back on the wearer's (m)");
         }
 
-        [Test]
-        public void ASwapCanBeOnlyReported()
+        // A calibrated pipeline that only reports swaps (TrackingSettings.ReassignSwappedDevices off).
+        private static SelfAvatarPipeline ReportingSwapsOnly(out Wearer wearer, ref double t)
         {
-            var wearer = new Wearer("mocapbank_30fps.bvh", 64);
-            double t = 0;
+            wearer = new Wearer("mocapbank_30fps.bvh", 64);
             var settings = new PipelineSettings();
             settings.Tracking.ReassignSwappedDevices = false;
             var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map, settings);
             wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            return pipeline;
+        }
+
+        [Test]
+        public void ASwapCanBeOnlyReported()
+        {
+            double t = 0;
+            SelfAvatarPipeline pipeline = ReportingSwapsOnly(out Wearer wearer, ref t);
             int leftBefore = pipeline.DeviceIndexOf(DeviceRole.LeftFoot);
             Stand(wearer, pipeline, ref t, 5.0, s => Swap(s, DeviceRole.LeftFoot, DeviceRole.RightFoot));
             Assert.That(pipeline.LastSwap, Is.EqualTo(RoleSwap.Feet));
@@ -159,12 +166,8 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void ASwapThatStaysIsReportedOnce()
         {
-            var wearer = new Wearer("mocapbank_30fps.bvh", 64);
             double t = 0;
-            var settings = new PipelineSettings();
-            settings.Tracking.ReassignSwappedDevices = false;
-            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map, settings);
-            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            SelfAvatarPipeline pipeline = ReportingSwapsOnly(out Wearer wearer, ref t);
             int reports = 0;
             double lastTime = double.NaN;
             void Count(DeviceSample[] s)

@@ -40,6 +40,16 @@ namespace AvatarGo.Core.Tests
 
         public void StandInTPose(Core.RigidPose placement) => TPoser.Apply(Map, Pose, placement);
 
+        /// <summary>Turns one joint (and what hangs from it) by <paramref name="degrees"/> about a world axis.</summary>
+        public void Turn(HumanoidBone bone, System.Numerics.Vector3 axis, float degrees)
+        {
+            int j = Map[bone];
+            int parent = Map.Skeleton.GetParent(j);
+            System.Numerics.Quaternion world = Rotations.AngleAxis(degrees, axis) * Pose.World[j].Rotation;
+            Pose.Local[j] = Pose.Local[j].WithRotation(System.Numerics.Quaternion.Conjugate(Pose.World[parent].Rotation) * world);
+            Pose.UpdateWorld();
+        }
+
         /// <summary>The device samples of the current pose, with noise, in <see cref="Devices"/> order.</summary>
         public void Sample(DeviceSample[] samples, float positionNoise, float rotationNoiseDegrees)
         {
