@@ -2,26 +2,59 @@ using System;
 
 namespace AvatarGo.Core
 {
-    /// <summary>Tunable thresholds of the calibration; the defaults suit adults in room-scale VR.</summary>
+    /// <summary>
+    /// Tunable thresholds of the calibration; the defaults suit adults in room-scale VR. Every number is checked where it is
+    /// set: a bad one throws an <see cref="ArgumentOutOfRangeException"/> naming the setting.
+    /// </summary>
     public sealed class CalibrationSettings
     {
         /// <summary>Seconds of samples before a trigger press that are averaged (0.5 s).</summary>
-        public float WindowSeconds { get; set; } = 0.5f;
+        public float WindowSeconds
+        {
+            get => _windowSeconds;
+            set => _windowSeconds = SettingChecks.PositiveFinite(value, nameof(CalibrationSettings), nameof(WindowSeconds));
+        }
+
+        private float _windowSeconds = 0.5f;
 
         /// <summary>Largest distance (m) of any sample from its device's mean for the wearer to count as still (2 cm).</summary>
-        public float StillPosition { get; set; } = 0.02f;
+        public float StillPosition
+        {
+            get => _stillPosition;
+            set => _stillPosition = SettingChecks.Positive(value, nameof(CalibrationSettings), nameof(StillPosition));
+        }
+
+        private float _stillPosition = 0.02f;
 
         /// <summary>Largest angle (°) of any sample from its device's mean rotation to count as still (5°).</summary>
-        public float StillRotationDegrees { get; set; } = 5f;
+        public float StillRotationDegrees
+        {
+            get => _stillRotationDegrees;
+            set => _stillRotationDegrees = SettingChecks.Positive(value, nameof(CalibrationSettings), nameof(StillRotationDegrees));
+        }
+
+        private float _stillRotationDegrees = 5f;
 
         /// <summary>
         /// The floor height in tracking space; 0 for the floor-level tracking origin of OpenXR and SteamVR
         /// (the default). NaN: estimate it from the foot trackers minus <see cref="FootTrackerHeight"/>.
         /// </summary>
-        public float FloorHeight { get; set; }
+        public float FloorHeight
+        {
+            get => _floorHeight;
+            set => _floorHeight = float.IsNaN(value) ? value : SettingChecks.Finite(value, nameof(CalibrationSettings), nameof(FloorHeight));
+        }
+
+        private float _floorHeight;
 
         /// <summary>Height of a foot tracker's origin above the floor, used only when the floor is estimated (8 cm).</summary>
-        public float FootTrackerHeight { get; set; } = 0.08f;
+        public float FootTrackerHeight
+        {
+            get => _footTrackerHeight;
+            set => _footTrackerHeight = SettingChecks.NotNegativeFinite(value, nameof(CalibrationSettings), nameof(FootTrackerHeight));
+        }
+
+        private float _footTrackerHeight = 0.08f;
 
         /// <summary>
         /// When false (the default) only a controller's trigger runs a calibration step; a press attributed to a tracker or
@@ -54,6 +87,12 @@ namespace AvatarGo.Core
         }
 
         /// <summary>How far in front of the ankle a foot tracker sits, used to place the avatar (8 cm).</summary>
-        public float FootTrackerForward { get; set; } = 0.08f;
+        public float FootTrackerForward
+        {
+            get => _footTrackerForward;
+            set => _footTrackerForward = SettingChecks.Finite(value, nameof(CalibrationSettings), nameof(FootTrackerForward));
+        }
+
+        private float _footTrackerForward = 0.08f;
     }
 }

@@ -51,14 +51,26 @@ namespace AvatarGo.Core
         /// How far the pelvis tracker's origin sits above the hips joint, in metres (3 cm: a belt strap over the sacrum,
         /// as <see cref="CalibrationSettings.FootTrackerForward"/> is the foot trackers' nominal offset).
         /// </summary>
-        public float PelvisTrackerAboveHips { get; set; } = 0.03f;
+        public float PelvisTrackerAboveHips
+        {
+            get => _pelvisTrackerAboveHips;
+            set => _pelvisTrackerAboveHips = SettingChecks.Finite(value, nameof(ProportionSettings), nameof(PelvisTrackerAboveHips));
+        }
+
+        private float _pelvisTrackerAboveHips = 0.03f;
 
         /// <summary>
         /// How far that offset may be off, in metres (2 cm: straps never sit twice in the same place). The hip height's and
         /// the legs' uncertainty; the legs are refitted only when the measured hip height differs from the uniformly scaled
         /// avatar's by more than the uncertainty.
         /// </summary>
-        public float PelvisTrackerTolerance { get; set; } = 0.02f;
+        public float PelvisTrackerTolerance
+        {
+            get => _pelvisTrackerTolerance;
+            set => _pelvisTrackerTolerance = SettingChecks.NotNegativeFinite(value, nameof(ProportionSettings), nameof(PelvisTrackerTolerance));
+        }
+
+        private float _pelvisTrackerTolerance = 0.02f;
 
         /// <summary>
         /// How far the wrist may be from where the avatar's hand puts it relative to the controller's grip, in metres (1 cm:
@@ -66,9 +78,21 @@ namespace AvatarGo.Core
         /// the shoulder width's; the arms are refitted only when the measured reach differs from the uniformly scaled
         /// avatar's by more than it.
         /// </summary>
-        public float ControllerTolerance { get; set; } = 0.01f;
+        public float ControllerTolerance
+        {
+            get => _controllerTolerance;
+            set => _controllerTolerance = SettingChecks.NotNegativeFinite(value, nameof(ProportionSettings), nameof(ControllerTolerance));
+        }
+
+        private float _controllerTolerance = 0.01f;
 
         /// <summary>How far the HMD's reported centre eye may be from the eyes, in metres (3 mm).</summary>
-        public float HmdTolerance { get; set; } = 0.003f;
+        public float HmdTolerance
+        {
+            get => _hmdTolerance;
+            set => _hmdTolerance = SettingChecks.NotNegativeFinite(value, nameof(ProportionSettings), nameof(HmdTolerance));
+        }
+
+        private float _hmdTolerance = 0.003f;
     }
 }

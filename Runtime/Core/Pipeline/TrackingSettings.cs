@@ -1,5 +1,3 @@
-using System;
-
 namespace AvatarGo.Core
 {
     /// <summary>
@@ -9,29 +7,19 @@ namespace AvatarGo.Core
     /// </summary>
     /// <remarks>
     /// Every setter refuses a value that would break the pipeline (NaN, a negative time, a zero speed limit that would
-    /// never let a part recover) with an <see cref="ArgumentOutOfRangeException"/> naming the setting, so that a bad value
+    /// never let a part recover) with an <see cref="System.ArgumentOutOfRangeException"/> naming the setting, so that a bad value
     /// fails where it is set, not in a later frame. Where it makes sense, positive infinity turns a limit off (no speed
     /// limit, never reacquire, hold for good).
     /// </remarks>
     public sealed class TrackingSettings
     {
-        private static float Positive(float value, string name) =>
-            value > 0f ? value : throw new ArgumentOutOfRangeException(name, value, $"TrackingSettings.{name} must be more than 0 (or infinity).");
-
-        private static float NotNegative(float value, string name) =>
-            value >= 0f ? value : throw new ArgumentOutOfRangeException(name, value, $"TrackingSettings.{name} must be 0 or more (or infinity).");
-
-        private static float PositiveFinite(float value, string name) =>
-            value > 0f && !float.IsInfinity(value) ? value : throw new ArgumentOutOfRangeException(name, value, $"TrackingSettings.{name} must be a finite number more than 0.");
-
-        private static float NotNegativeFinite(float value, string name) =>
-            value >= 0f && !float.IsInfinity(value) ? value : throw new ArgumentOutOfRangeException(name, value, $"TrackingSettings.{name} must be a finite number, 0 or more.");
+        private const string Owner = nameof(TrackingSettings);
 
         /// <summary>A sample that would move its device faster than this (m/s) since its last accepted one is a glitch, not motion (20 m/s: faster than a kick or a throw).</summary>
         public float MaxSpeed
         {
             get => _maxSpeed;
-            set => _maxSpeed = Positive(value, nameof(MaxSpeed));
+            set => _maxSpeed = SettingChecks.Positive(value, Owner, nameof(MaxSpeed));
         }
 
         private float _maxSpeed = 20f;
@@ -40,7 +28,7 @@ namespace AvatarGo.Core
         public float MaxAngularSpeedDegrees
         {
             get => _maxAngularSpeedDegrees;
-            set => _maxAngularSpeedDegrees = Positive(value, nameof(MaxAngularSpeedDegrees));
+            set => _maxAngularSpeedDegrees = SettingChecks.Positive(value, Owner, nameof(MaxAngularSpeedDegrees));
         }
 
         private float _maxAngularSpeedDegrees = 3000f;
@@ -52,7 +40,7 @@ namespace AvatarGo.Core
         public float ReacquireSeconds
         {
             get => _reacquireSeconds;
-            set => _reacquireSeconds = NotNegative(value, nameof(ReacquireSeconds));
+            set => _reacquireSeconds = SettingChecks.NotNegative(value, Owner, nameof(ReacquireSeconds));
         }
 
         private float _reacquireSeconds = 0.5f;
@@ -64,7 +52,7 @@ namespace AvatarGo.Core
         public float BodyReachFactor
         {
             get => _bodyReachFactor;
-            set => _bodyReachFactor = PositiveFinite(value, nameof(BodyReachFactor));
+            set => _bodyReachFactor = SettingChecks.PositiveFinite(value, Owner, nameof(BodyReachFactor));
         }
 
         private float _bodyReachFactor = 1.3f;
@@ -73,7 +61,7 @@ namespace AvatarGo.Core
         public float BodyReachMargin
         {
             get => _bodyReachMargin;
-            set => _bodyReachMargin = NotNegative(value, nameof(BodyReachMargin));
+            set => _bodyReachMargin = SettingChecks.NotNegative(value, Owner, nameof(BodyReachMargin));
         }
 
         private float _bodyReachMargin = 0.2f;
@@ -82,7 +70,7 @@ namespace AvatarGo.Core
         public float HoldSeconds
         {
             get => _holdSeconds;
-            set => _holdSeconds = NotNegative(value, nameof(HoldSeconds));
+            set => _holdSeconds = SettingChecks.NotNegative(value, Owner, nameof(HoldSeconds));
         }
 
         private float _holdSeconds = 0.25f;
@@ -91,7 +79,7 @@ namespace AvatarGo.Core
         public float EaseSeconds
         {
             get => _easeSeconds;
-            set => _easeSeconds = NotNegative(value, nameof(EaseSeconds));
+            set => _easeSeconds = SettingChecks.NotNegative(value, Owner, nameof(EaseSeconds));
         }
 
         private float _easeSeconds = 1f;
@@ -100,7 +88,7 @@ namespace AvatarGo.Core
         public float RecoveryTimeConstant
         {
             get => _recoveryTimeConstant;
-            set => _recoveryTimeConstant = NotNegative(value, nameof(RecoveryTimeConstant));
+            set => _recoveryTimeConstant = SettingChecks.NotNegative(value, Owner, nameof(RecoveryTimeConstant));
         }
 
         private float _recoveryTimeConstant = 0.05f;
@@ -109,7 +97,7 @@ namespace AvatarGo.Core
         public float RecoveryMaxSpeed
         {
             get => _recoveryMaxSpeed;
-            set => _recoveryMaxSpeed = Positive(value, nameof(RecoveryMaxSpeed));
+            set => _recoveryMaxSpeed = SettingChecks.Positive(value, Owner, nameof(RecoveryMaxSpeed));
         }
 
         private float _recoveryMaxSpeed = 1.2f;
@@ -118,7 +106,7 @@ namespace AvatarGo.Core
         public float RecoveryMaxAngularSpeedDegrees
         {
             get => _recoveryMaxAngularSpeedDegrees;
-            set => _recoveryMaxAngularSpeedDegrees = Positive(value, nameof(RecoveryMaxAngularSpeedDegrees));
+            set => _recoveryMaxAngularSpeedDegrees = SettingChecks.Positive(value, Owner, nameof(RecoveryMaxAngularSpeedDegrees));
         }
 
         private float _recoveryMaxAngularSpeedDegrees = 360f;
@@ -133,7 +121,7 @@ namespace AvatarGo.Core
         public float SmoothingMinCutoff
         {
             get => _smoothingMinCutoff;
-            set => _smoothingMinCutoff = PositiveFinite(value, nameof(SmoothingMinCutoff));
+            set => _smoothingMinCutoff = SettingChecks.PositiveFinite(value, Owner, nameof(SmoothingMinCutoff));
         }
 
         private float _smoothingMinCutoff = 2f;
@@ -142,7 +130,7 @@ namespace AvatarGo.Core
         public float SmoothingBeta
         {
             get => _smoothingBeta;
-            set => _smoothingBeta = NotNegativeFinite(value, nameof(SmoothingBeta));
+            set => _smoothingBeta = SettingChecks.NotNegativeFinite(value, Owner, nameof(SmoothingBeta));
         }
 
         private float _smoothingBeta = 30f;
@@ -158,7 +146,7 @@ namespace AvatarGo.Core
         public float SwapWindowSeconds
         {
             get => _swapWindowSeconds;
-            set => _swapWindowSeconds = Positive(value, nameof(SwapWindowSeconds));
+            set => _swapWindowSeconds = SettingChecks.Positive(value, Owner, nameof(SwapWindowSeconds));
         }
 
         private float _swapWindowSeconds = 3f;
@@ -167,7 +155,7 @@ namespace AvatarGo.Core
         public float SwapMargin
         {
             get => _swapMargin;
-            set => _swapMargin = NotNegativeFinite(value, nameof(SwapMargin));
+            set => _swapMargin = SettingChecks.NotNegativeFinite(value, Owner, nameof(SwapMargin));
         }
 
         private float _swapMargin = 0.2f;

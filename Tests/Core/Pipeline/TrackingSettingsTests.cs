@@ -44,6 +44,37 @@ namespace AvatarGo.Core.Tests
             }
         }
 
+        /// <summary>
+        /// The calibration's and the proportion fit's numbers are checked where they are set too (a NaN window or stillness
+        /// never let the wearer count as still; a NaN foot tracker offset put NaN into the placement).
+        /// </summary>
+        [TestCase(typeof(CalibrationSettings), nameof(CalibrationSettings.WindowSeconds), new[] { float.NaN, 0f, -1f, float.PositiveInfinity })]
+        [TestCase(typeof(CalibrationSettings), nameof(CalibrationSettings.StillPosition), new[] { float.NaN, 0f, -1f })]
+        [TestCase(typeof(CalibrationSettings), nameof(CalibrationSettings.StillRotationDegrees), new[] { float.NaN, 0f, -1f })]
+        [TestCase(typeof(CalibrationSettings), nameof(CalibrationSettings.FloorHeight), new[] { float.PositiveInfinity, float.NegativeInfinity })]
+        [TestCase(typeof(CalibrationSettings), nameof(CalibrationSettings.FootTrackerHeight), new[] { float.NaN, -0.01f, float.PositiveInfinity })]
+        [TestCase(typeof(CalibrationSettings), nameof(CalibrationSettings.FootTrackerForward), new[] { float.NaN, float.PositiveInfinity })]
+        [TestCase(typeof(ProportionSettings), nameof(ProportionSettings.PelvisTrackerAboveHips), new[] { float.NaN, float.NegativeInfinity })]
+        [TestCase(typeof(ProportionSettings), nameof(ProportionSettings.PelvisTrackerTolerance), new[] { float.NaN, -0.01f, float.PositiveInfinity })]
+        [TestCase(typeof(ProportionSettings), nameof(ProportionSettings.ControllerTolerance), new[] { float.NaN, -0.01f, float.PositiveInfinity })]
+        [TestCase(typeof(ProportionSettings), nameof(ProportionSettings.HmdTolerance), new[] { float.NaN, -0.01f, float.PositiveInfinity })]
+        public void TheCalibrationsNumbersAreCheckedWhereTheyAreSet(Type type, string name, float[] bad)
+        {
+            PropertyInfo p = type.GetProperty(name);
+            object settings = Activator.CreateInstance(type);
+            object before = p.GetValue(settings);
+            foreach (float value in bad)
+            {
+                var e = Assert.Throws<TargetInvocationException>(() => p.SetValue(settings, value), name + " = " + value);
+                Assert.That(((ArgumentOutOfRangeException)e.InnerException).ParamName, Is.EqualTo(name));
+                StringAssert.Contains(type.Name + "." + name, e.InnerException.Message);
+            }
+            Assert.That(p.GetValue(settings), Is.EqualTo(before), "kept");
+        }
+
+        [Test]
+        public void TheFloorMayBeLeftToTheFeet() => Assert.That(new CalibrationSettings { FloorHeight = float.NaN }.FloorHeight, Is.NaN);
+
         [TestCase(nameof(TrackingSettings.MaxSpeed)), TestCase(nameof(TrackingSettings.RecoveryMaxSpeed)), TestCase(nameof(TrackingSettings.SmoothingMinCutoff)),
          TestCase(nameof(TrackingSettings.SwapWindowSeconds)), TestCase(nameof(TrackingSettings.BodyReachFactor))]
         public void ALimitThatMustMoveRefusesZero(string name)
