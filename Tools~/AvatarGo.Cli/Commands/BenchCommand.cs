@@ -83,7 +83,7 @@ public sealed class BenchCommand : ICommand
         var machine = Machine();
         if (json)
         {
-            stdout.WriteLine(JsonSerializer.Serialize(new
+            stdout.WriteLine(JsonReports.Serialize(new
             {
                 machine,
                 clip = Path.GetFileName(fixture.Clip),
@@ -94,7 +94,7 @@ public sealed class BenchCommand : ICommand
                 runs,
                 avatars_per_core_at_90hz = avatars,
                 cases = results.Select(r => new { name = r.Name.Trim(), ns_per_frame_median = r.Median, ns_per_frame_min = r.Min, ns_per_frame_max = r.Max, bytes_per_frame = r.BytesPerFrame }),
-            }, new JsonSerializerOptions { WriteIndented = true }));
+            }));
             return 0;
         }
         stdout.WriteLine($"machine: {machine["cpu"]}, {machine["cores"]} cores, {machine["os"]}, .NET {machine["dotnet"]}, {machine["configuration"]}");

@@ -428,7 +428,7 @@ public sealed class EvaluateCommand : ICommand
                     .ToDictionary(f => f.ToString(), f => new { median = r.Fingers.Gap(f).Median, p95 = r.Fingers.Gap(f).P95, max = r.Fingers.Gap(f).Max }),
             },
         };
-        return JsonSerializer.Serialize(doc, new JsonSerializerOptions { WriteIndented = true });
+        return JsonReports.Serialize(doc);
     }
 
     private static object Stats(ErrorSeries s) =>

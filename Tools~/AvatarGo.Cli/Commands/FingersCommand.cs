@@ -66,7 +66,7 @@ public sealed class FingersCommand : ICommand
                 }
         if (json)
         {
-            stdout.WriteLine(JsonSerializer.Serialize(new { machine = BenchCommand.Machine(), results = rows }, new JsonSerializerOptions { WriteIndented = true }));
+            stdout.WriteLine(JsonReports.Serialize(new { machine = BenchCommand.Machine(), results = rows }));
             return 0;
         }
         stdout.WriteLine("controller wobbling 2 mm / 3 deg in the hand for 2 s; fingertip gaps of the four fingers; the thumb's apart");

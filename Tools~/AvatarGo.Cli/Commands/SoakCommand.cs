@@ -33,7 +33,7 @@ public sealed class SoakCommand : ICommand
         SoakRun.Result r = new SoakRun(bvh).Run(minutes, every, lossSeconds);
         if (json)
         {
-            stdout.WriteLine(JsonSerializer.Serialize(r, new JsonSerializerOptions { WriteIndented = true }));
+            stdout.WriteLine(JsonReports.Serialize(r));
             return 0;
         }
         var inv = CultureInfo.InvariantCulture;

@@ -133,6 +133,27 @@ public class OutputClashTests : TempFolderTests
         Assert.That(File.ReadAllText(json), Is.EqualTo("the previous old.json\n"));
     }
 
+    /// <summary>
+    /// A session without some joints' truth (the format lets bones be absent) is evaluated, and a figure of no frames is
+    /// null in the JSON (found in review: without the knees' truth the knee-angle median was NaN, and the run exited 1 with a
+    /// serializer message, writing neither the JSON nor the positions).
+    /// </summary>
+    [Test]
+    public void AFigureOfNoFramesIsNullInTheJson()
+    {
+        string session = Session();
+        string partial = Path.Combine(Dir, "no-knees.agsession");
+        File.WriteAllLines(partial, File.ReadAllLines(session).Where(l => !l.StartsWith("truth LeftLowerLeg ", StringComparison.Ordinal) && !l.StartsWith("truth RightLowerLeg ", StringComparison.Ordinal)));
+        Assume.That(File.ReadAllLines(partial).Length, Is.LessThan(File.ReadAllLines(session).Length), "the knees' truth lines were there");
+        string json = Path.Combine(Dir, "r.json"), csv = Path.Combine(Dir, "p.csv");
+        var r = CliRunner.Run("evaluate", partial, "--hands", "calibrated", "--json", json, "--positions", csv);
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
+        using var doc = System.Text.Json.JsonDocument.Parse(File.ReadAllText(json));
+        Assert.That(doc.RootElement.GetProperty("knee_angle_error_deg").ValueKind, Is.EqualTo(System.Text.Json.JsonValueKind.Null));
+        Assert.That(doc.RootElement.GetProperty("mpjpe_mm").GetDouble(), Is.GreaterThan(0.0));
+        Assert.That(File.Exists(csv), Is.True);
+    }
+
     [Test]
     public void DemoLeavesAFileAtItsOldTemporaryNameAlone()
     {
