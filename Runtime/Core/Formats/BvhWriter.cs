@@ -74,10 +74,27 @@ namespace AvatarGo.Core
             Skeleton s = clip.Skeleton;
             int roots = 0;
             var endSiteStems = new List<string>();
+            if (s.JointCount > BvhReader.MaxJoints || clip.ChannelCount > BvhReader.MaxChannels || (long)clip.ChannelCount * clip.FrameCount > BvhReader.MaxValues)
+                throw new ArgumentException($"The clip has {s.JointCount} joints, {clip.ChannelCount} channels and {clip.FrameCount} frames: beyond what a BVH reader takes ({BvhReader.MaxJoints} joints, {BvhReader.MaxChannels} channels, {BvhReader.MaxValues} values).", nameof(clip));
             for (int j = 0; j < s.JointCount; j++)
             {
                 if (s.GetParent(j) < 0) roots++;
-                if (s.IsEndSite(j)) { if (s.GetParent(j) >= 0) endSiteStems.Add(s.GetName(s.GetParent(j)) + "_End"); continue; }
+                if (s.IsEndSite(j))
+                {
+                    // An End Site is a leaf with no channels below a joint (found in review: one with channels lost them
+                    // silently, one with children or as the root wrote a file the reader refuses).
+                    if (s.GetParent(j) < 0) throw new ArgumentException($"The root '{s.GetName(j)}' is an End Site; a BVH file's ROOT is a joint.", nameof(clip));
+                    if (clip.GetChannels(j).Count > 0) throw new ArgumentException($"End Site {j} ('{s.GetName(j)}') has {clip.GetChannels(j).Count} channels; a BVH End Site has none.", nameof(clip));
+                    for (int c = j + 1; c < s.JointCount; c++)
+                        if (s.GetParent(c) == j) throw new ArgumentException($"End Site {j} ('{s.GetName(j)}') has a child ('{s.GetName(c)}'); a BVH End Site has none.", nameof(clip));
+                    endSiteStems.Add(s.GetName(s.GetParent(j)) + "_End");
+                    continue;
+                }
+                IReadOnlyList<BvhChannel> channels = clip.GetChannels(j);
+                if (channels.Count > 6) throw new ArgumentException($"Joint {j} ('{s.GetName(j)}') has {channels.Count} channels; a BVH joint has at most 6.", nameof(clip));
+                for (int a = 0; a < channels.Count; a++)
+                    for (int b = a + 1; b < channels.Count; b++)
+                        if (channels[a] == channels[b]) throw new ArgumentException($"Joint {j} ('{s.GetName(j)}') lists channel {channels[a]} twice; a BVH reader refuses that.", nameof(clip));
                 string name = s.GetName(j);
                 if (!ReadsBack(name))
                     throw new ArgumentException($"Joint {j} is named '{name}': a BVH reader reads a name's words joined by single spaces, so it would read another name.", nameof(clip));

@@ -266,6 +266,9 @@ namespace AvatarGo.Core
                     if (names.Count == SessionLimits.MaxTruthJoints) throw Error(_lineNumber, $"more than {SessionLimits.MaxTruthJoints} truth joints (the format's limit)");
                     int parent = Int(2);
                     if (parent < -1 || parent >= names.Count) throw Error(_lineNumber, $"parent {parent} must be -1 or an earlier joint");
+                    // An end point has no joints below it (found in review: one that had was read, and its solved motion
+                    // written by `evaluate --bvh-out` as a BVH no reader takes).
+                    if (parent >= 0 && endSites[parent]) throw Error(_lineNumber, $"parent {parent} is an end point ('end'), which has no joints below it");
                     string name = Token(5).ToString();
                     if (!nameSet.Add(name)) throw Error(_lineNumber, $"joint name '{Shorten(name)}' is used twice");
                     bool end;

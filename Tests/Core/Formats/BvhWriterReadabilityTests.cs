@@ -52,5 +52,41 @@ namespace AvatarGo.Core.Tests
             }
             finally { File.Delete(path); }
         }
+
+        /// <summary>
+        /// The channels a reader refuses, and End Sites a BVH file cannot hold, are refused too (a second review: each of
+        /// these was written over a good file, which then read back refused; an End Site's channels were dropped silently).
+        /// </summary>
+        [TestCase("a channel listed twice"), TestCase("seven channels"), TestCase("an End Site with a child"),
+         TestCase("an End Site as the root"), TestCase("an End Site with a channel")]
+        public void ChannelsAndEndSitesTheReaderRefusesAreRefused(string what)
+        {
+            string[] names = { "Hips", "Spine", "Head" };
+            int[] parents = { -1, 0, 1 };
+            bool[] ends = { false, false, true };
+            var rot3 = new[] { BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation };
+            var channels = new[] { rot3, rot3, Array.Empty<BvhChannel>() };
+            switch (what)
+            {
+                case "a channel listed twice": channels[1] = new[] { BvhChannel.Xrotation, BvhChannel.Xrotation, BvhChannel.Yrotation }; break;
+                case "seven channels":
+                    channels[0] = new[] { BvhChannel.Xposition, BvhChannel.Yposition, BvhChannel.Zposition, BvhChannel.Zrotation, BvhChannel.Xrotation, BvhChannel.Yrotation, BvhChannel.Xposition };
+                    break;
+                case "an End Site with a child": ends[1] = true; channels[1] = Array.Empty<BvhChannel>(); break;
+                case "an End Site as the root": ends[0] = true; channels[0] = Array.Empty<BvhChannel>(); break;
+                default: channels[2] = new[] { BvhChannel.Xrotation }; break;
+            }
+            int total = 0;
+            foreach (BvhChannel[] c in channels) total += c.Length;
+            var clip = new BvhClip(names, parents, ends, new[] { Vector3.Zero, new Vector3(0, 10, 0), new Vector3(0, 5, 0) }, channels, 2, 1f / 30f, new float[2 * total], 1f);
+            string path = Path.Combine(Path.GetTempPath(), "avatargo-bvh-" + Guid.NewGuid().ToString("N") + ".bvh");
+            try
+            {
+                File.WriteAllText(path, "a good file\n");
+                Assert.Throws<ArgumentException>(() => BvhWriter.WriteFile(path, clip), what);
+                Assert.That(File.ReadAllText(path), Is.EqualTo("a good file\n"), "the good file is kept");
+            }
+            finally { File.Delete(path); }
+        }
     }
 }

@@ -124,6 +124,14 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void AnEndPointWithAJointBelowItIsRefused()
+        {
+            // Found in review: it was read, and `evaluate --bvh-out` wrote the solved motion as a BVH no reader takes.
+            AssertFailsAtLine(Start + "device 0 hmd H none\ntruth-joint 0 -1 Hips joint Hips 0 1 0 0 0 0 1\n" +
+                "truth-joint 1 0 - end Tip 0 0.1 0 0 0 0 1\ntruth-joint 2 1 - joint Below 0 0.1 0 0 0 0 1\nend-header\nend 0\n", 8, "is an end point");
+        }
+
+        [Test]
         public void LongLinesAreRefusedBeforeTheyAreHeld()
         {
             AssertFailsAtLine(Start + "# " + new string('x', SessionLimits.MaxLineLength + 5) + "\n" + OneDevice + "end 0\n", 5, "a line longer than");
