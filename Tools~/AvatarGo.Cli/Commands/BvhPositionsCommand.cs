@@ -42,7 +42,7 @@ public sealed class BvhPositionsCommand : ICommand
         {
             if (s.IsEndSite(j)) continue;
             string n = s.GetName(j);
-            line.Append(',').Append(n).Append(".x,").Append(n).Append(".y,").Append(n).Append(".z");
+            foreach (string axis in new[] { ".x", ".y", ".z" }) line.Append(',').Append(CsvField(n + axis));
         }
         stdout.WriteLine(line.ToString());
 
@@ -82,4 +82,9 @@ public sealed class BvhPositionsCommand : ICommand
             return v;
         }
     }
+
+    // A header field as RFC 4180 has it: quoted, inner quotes doubled, when a BVH name holds a comma, a quote or a line
+    // break (found in review: a joint named `Joint,A "q"` shifted every column after it).
+    private static string CsvField(string field) =>
+        field.IndexOfAny(new[] { ',', '"', '\n', '\r' }) < 0 ? field : "\"" + field.Replace("\"", "\"\"") + "\"";
 }

@@ -154,6 +154,24 @@ public class OutputClashTests : TempFolderTests
         Assert.That(File.Exists(csv), Is.True);
     }
 
+    /// <summary>
+    /// `bvh positions` quotes a header field whose joint name holds a comma or a quote (RFC 4180), so the header has as many
+    /// fields as each row (found in review: `Joint,A "q"` shifted every column after it).
+    /// </summary>
+    [Test]
+    public void APositionsHeaderQuotesNamesWithCommasAndQuotes()
+    {
+        string clip = Path.Combine(Dir, "odd.bvh");
+        File.WriteAllText(clip, File.ReadAllText(Paths.Mocap("mocapbank_30fps.bvh")).Replace("JOINT LeftShoulder", "JOINT Left,Arm \"q\""));
+        var r = CliRunner.Run("bvh", "positions", clip, "--frames", "0:2");
+        Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
+        string[] lines = r.Stdout.TrimEnd().Split('\n');
+        using var parser = new Microsoft.VisualBasic.FileIO.TextFieldParser(new StringReader(string.Join("\n", lines))) { Delimiters = new[] { "," }, HasFieldsEnclosedInQuotes = true };
+        string[] header = parser.ReadFields(), row = parser.ReadFields();
+        Assert.That(header, Has.Length.EqualTo(row.Length));
+        Assert.That(header, Does.Contain("Left,Arm \"q\".x"));
+    }
+
     [Test]
     public void DemoLeavesAFileAtItsOldTemporaryNameAlone()
     {
