@@ -147,7 +147,10 @@ namespace AvatarGo.Core
             // Before anything is touched: a profile that would not load back (a scale out of range) is refused here.
             try { FromJson(json); }
             catch (FormatException e) { throw new ArgumentException("The profile cannot be saved: it would not load back: " + e.Message, nameof(profile), e); }
-            Directory.CreateDirectory(Path.GetDirectoryName(Path.GetFullPath(path)));
+            // A root ("/", "C:\") has no folder to create: the writer then says it is a folder (found in review: null was
+            // passed on, and an ArgumentNullException came out where the docs promise an IOException).
+            string folder = Path.GetDirectoryName(Path.GetFullPath(path));
+            if (!string.IsNullOrEmpty(folder)) Directory.CreateDirectory(folder);
             AtomicFileWriter.WriteAllText(path, json);
         }
 

@@ -32,7 +32,7 @@ namespace AvatarGo.Core
         /// <param name="writer">Where the text goes.</param>
         /// <param name="header">The session header.</param>
         /// <param name="ownsWriter">Dispose <paramref name="writer"/> when this writer is disposed.</param>
-        /// <exception cref="ArgumentException">A serial or joint name contains white space or is empty, or a joint's rest
+        /// <exception cref="ArgumentException">A serial or joint name contains white space or is empty, a serial is "-", or a joint's rest
         /// pose is not one the format holds.</exception>
         public SessionWriter(TextWriter writer, SessionHeader header, bool ownsWriter = false)
             : this(writer, header, ownsWriter, null)
@@ -299,6 +299,8 @@ namespace AvatarGo.Core
             {
                 string serial = d.Serial.Length == 0 ? "-" : d.Serial;
                 if (!SessionText.IsToken(serial)) throw new ArgumentException($"Serial '{d.Serial}' of device {d.Id} contains white space.");
+                // "-" is how the format writes no serial: a serial that is "-" would read back as none (found in review).
+                if (d.Serial == "-") throw new ArgumentException($"Serial '-' of device {d.Id}: the session format writes '-' for a device without a serial.");
                 Begin("device ").Append(d.Id).Append(" ").Append(SessionText.ClassName(d.Class)).Append(" ").Append(serial).Append(" ")
                     .Append(SessionText.RoleName(d.RuntimeRole)).EndLine();
             }

@@ -207,6 +207,20 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void ASerialThatIsTheNoSerialMarkIsRefused()
+        {
+            // "-" is how the format writes no serial; written as it is, a serial "-" read back as none (found in review).
+            var header = new SessionHeader(90f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "-") });
+            var e = Assert.Throws<ArgumentException>(() => new SessionWriter(new System.IO.StringWriter(), header).Dispose());
+            StringAssert.Contains("Serial '-'", e.Message);
+            // A device without a serial is written as "-" and reads back without one.
+            var text = new System.IO.StringWriter();
+            using (var writer = new SessionWriter(text, new SessionHeader(90f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "") }))) { }
+            using var reader = new SessionReader(new System.IO.StringReader(text.ToString()), "s");
+            Assert.That(reader.Header.Devices[0].Serial, Is.EqualTo(""));
+        }
+
+        [Test]
         public void WriterRejectsInvalidTrackedPosesAndTimeGoingBack()
         {
             SessionHeader h = Header();

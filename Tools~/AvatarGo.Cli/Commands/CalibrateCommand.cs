@@ -96,8 +96,9 @@ public sealed class CalibrateCommand : ICommand
             {
                 CalibrationProfileStore.Save(calibrator.Profile, save); // atomic: a failure leaves an older PROFILE as it was
             }
-            catch (ArgumentException e)
+            catch (ArgumentException e) when (e.ParamName == "profile")
             {
+                // Only a profile that would not load back; other failures (the path) are the usual file errors.
                 stderr.WriteLine($"avatargo calibrate: the profile was not saved: {e.Message.Split(" (Parameter '")[0]}");
                 return 1;
             }

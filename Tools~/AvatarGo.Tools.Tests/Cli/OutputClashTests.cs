@@ -173,6 +173,15 @@ public class OutputClashTests : TempFolderTests
     }
 
     [Test]
+    public void AProfileSavedToARootSaysItIsAFolder()
+    {
+        // Found in review: the store passed a null folder on and the command printed "Value cannot be null".
+        var r = CliRunner.Run("calibrate", Session(), "--save", Path.GetPathRoot(Dir));
+        Assert.That(r.ExitCode, Is.EqualTo(1), r.ToString());
+        StringAssert.Contains("is a folder", r.Stderr);
+    }
+
+    [Test]
     public void DemoLeavesAFileAtItsOldTemporaryNameAlone()
     {
         string victim = Path.Combine(Path.GetTempPath(), $"avatargo-demo-{Environment.ProcessId}.agsession");
