@@ -16,7 +16,7 @@ namespace AvatarGo.Simulation
     /// 12 cm behind and 3 cm above the hips joint (belt strap over the sacrum); foot trackers on the instep, 8 cm in
     /// front of and 2 cm above the ankle joint. <see cref="Sample"/> varies each tracker's position by up to ±2 cm
     /// (±3 mm for the HMD, whose optics fix it to the eyes) and draws its rotation uniformly (the HMD: within ±5° of
-    /// level), because a strap never sits twice in the same place; a controller's grip varies by up to ±4 mm and ±4° about each axis: its
+    /// pitch and, separately, of roll, so up to about 7° from level), because a strap never sits twice in the same place; a controller's grip varies by up to ±4 mm and ±4° about each axis: its
     /// shape decides how it is held (the handle in the palm's crease, the index on the trigger), so people and holds differ
     /// by millimetres and degrees, not centimetres (an assumption, not a measurement).
     /// </remarks>

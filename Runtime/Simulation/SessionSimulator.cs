@@ -27,11 +27,13 @@ namespace AvatarGo.Simulation
         /// <paramref name="map"/> or, when null, found by <see cref="HumanoidDetection"/> (the names, else the structure).
         /// </summary>
         /// <exception cref="ArgumentException">The clip has no frames or is too long to simulate, or its skeleton lacks a required humanoid bone.</exception>
+        /// <exception cref="ArgumentOutOfRangeException">A rate or a phase's length that cannot make a session that calibrates (see <see cref="MinWalkInSeconds"/>).</exception>
         public SessionSimulator(BvhClip clip, SimulationOptions options = null, HumanoidMap map = null)
         {
             _clip = clip ?? throw new ArgumentNullException(nameof(clip));
             if (clip.FrameCount == 0) throw new ArgumentException("The clip has no frames (Frames: 0): there is no motion to simulate.", nameof(clip));
             _options = options ?? new SimulationOptions();
+            CheckTimings(_options);
             double frames = (_options.TPoseSeconds + _options.WalkInSeconds + _options.ExerciseSeconds + _options.BlendSeconds + clip.FrameCount * (double)clip.FrameTime) * _options.Rate;
             if (!(frames < int.MaxValue)) throw new ArgumentException($"The clip is too long to simulate at {_options.Rate} Hz ({(long)Math.Min(frames, long.MaxValue)} frames).", nameof(clip));
             string note = null;
@@ -47,6 +49,27 @@ namespace AvatarGo.Simulation
                 _map = new HumanoidMap(clip.Skeleton, _map.Pairs());
             }
             Upright = _options.StandClipUp ? ClipConventions.UprightTurn(clip, _map) : Quaternion.Identity;
+        }
+
+        /// <summary>The shortest walk-in that calibrates (s): its last 40 %, standing still, must hold most of the averaging window.</summary>
+        public const float MinWalkInSeconds = 1f;
+
+        // Options that cannot make a session that calibrates are refused (found in review: a walk-in of 0 s threw a
+        // NullReferenceException, and T-poses or walk-ins shorter than the calibrator's averaging window wrote sessions that
+        // never calibrate; a NaN rate blamed the clip's length).
+        private static void CheckTimings(SimulationOptions o)
+        {
+            if (!(o.Rate >= SessionLimits.MinRate && o.Rate <= SessionLimits.MaxRate))
+                throw new ArgumentOutOfRangeException(nameof(SimulationOptions.Rate), o.Rate, $"The rate must be from {SessionLimits.MinRate} to {SessionLimits.MaxRate} Hz.");
+            float window = new CalibrationSettings().WindowSeconds + 1f / o.Rate;
+            if (!(o.TPoseSeconds >= window) || float.IsInfinity(o.TPoseSeconds))
+                throw new ArgumentOutOfRangeException(nameof(SimulationOptions.TPoseSeconds), o.TPoseSeconds, $"The T-pose must last at least the calibration's averaging window and a frame ({window:0.###} s).");
+            if (!(o.WalkInSeconds >= MinWalkInSeconds) || float.IsInfinity(o.WalkInSeconds))
+                throw new ArgumentOutOfRangeException(nameof(SimulationOptions.WalkInSeconds), o.WalkInSeconds, $"The walk-in must last at least {MinWalkInSeconds} s (its last 40 % standing still for the calibration's window).");
+            if (!(o.ExerciseSeconds >= 0f) || float.IsInfinity(o.ExerciseSeconds))
+                throw new ArgumentOutOfRangeException(nameof(SimulationOptions.ExerciseSeconds), o.ExerciseSeconds, "The exercise lasts 0 or more (finite) seconds.");
+            if (!(o.BlendSeconds >= 0f) || float.IsInfinity(o.BlendSeconds))
+                throw new ArgumentOutOfRangeException(nameof(SimulationOptions.BlendSeconds), o.BlendSeconds, "The blend lasts 0 or more (finite) seconds.");
         }
 
         /// <summary>
@@ -212,7 +235,10 @@ namespace AvatarGo.Simulation
             }
         }
 
-        // Moves every clip frame so the first one stands where the T-pose stands (floor at y = 0, same facing).
+        // Moves every clip frame so the first one stands where the T-pose stands (same facing), the clip's lowest leg joint
+        // over all frames on the floor (y = 0). For a rig without toes the T-pose stands its ankles at their anatomical
+        // height instead, so such a clip's feet may sit a couple of centimetres higher than the T-pose's (MocapBank 21 mm,
+        // measured in review): the truth stays consistent, the blend from the T-pose lifts them.
         private void AlignClip(RigidPose[][] clipLocal, RigidPose target)
         {
             Skeleton s = _map.Skeleton;

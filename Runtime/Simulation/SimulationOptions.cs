@@ -29,7 +29,7 @@ namespace AvatarGo.Simulation
 
         /// <summary>
         /// How far from the shown avatar the wearer ends the walk-in, in the avatar's frame (x right, y up, z forward),
-        /// in metres (none: a perfect walk-in).
+        /// in metres (none: a perfect walk-in). Only x and z are used: the wearer stands on the floor, so y is ignored.
         /// </summary>
         public Vector3 Misalignment { get; set; }
 

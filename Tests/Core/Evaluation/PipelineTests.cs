@@ -48,6 +48,33 @@ namespace AvatarGo.Core.Tests
             Assert.That(fixedOffsets.EndEffectorMm.Median, Is.GreaterThanOrEqualTo(3 * exact.EndEffectorMm.Median), "fixed offsets at least 3x worse");
         }
 
+        /// <summary>
+        /// Simulation options that cannot make a session that calibrates are refused, naming the option (found in review: a
+        /// walk-in of 0 s threw a NullReferenceException; a T-pose of 0.4 s or a walk-in of 0.01 s wrote sessions that never
+        /// calibrate; a NaN rate blamed the clip's length). The shortest that are taken calibrate.
+        /// </summary>
+        [TestCase(nameof(SimulationOptions.WalkInSeconds), 0f), TestCase(nameof(SimulationOptions.WalkInSeconds), 0.01f),
+         TestCase(nameof(SimulationOptions.TPoseSeconds), 0f), TestCase(nameof(SimulationOptions.TPoseSeconds), 0.4f),
+         TestCase(nameof(SimulationOptions.TPoseSeconds), -1f), TestCase(nameof(SimulationOptions.BlendSeconds), float.NaN),
+         TestCase(nameof(SimulationOptions.ExerciseSeconds), -1f), TestCase(nameof(SimulationOptions.Rate), float.NaN)]
+        public void OptionsThatCannotCalibrateAreRefused(string option, float value)
+        {
+            var options = new SimulationOptions();
+            typeof(SimulationOptions).GetProperty(option).SetValue(options, value);
+            BvhClip clip = BvhReader.ReadFile(TestData.Mocap("mocapbank_30fps.bvh"), new BvhReadOptions { ToMetres = true });
+            var e = Assert.Throws<System.ArgumentOutOfRangeException>(() => new SessionSimulator(clip, options));
+            Assert.That(e.ParamName, Is.EqualTo(option));
+        }
+
+        [Test]
+        public void TheShortestPhasesTakenCalibrate()
+        {
+            string session = Sessions.Simulate("mocapbank_30fps.bvh", new SimulationOptions { TPoseSeconds = 0.5f + 1f / 90f, WalkInSeconds = SessionSimulator.MinWalkInSeconds, BlendSeconds = 0f });
+            using SessionReader reader = Sessions.Read(session);
+            EvaluationReport report = SessionEvaluator.Evaluate(reader, new PipelineSettings());
+            Assert.That(report.Frames, Is.GreaterThan(1000), "calibrated, then the clip compared");
+        }
+
         [Test]
         public void MocapBankFollowsWithinMillimetres()
         {
