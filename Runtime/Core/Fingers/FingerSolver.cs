@@ -210,6 +210,30 @@ namespace AvatarGo.Core
         public float SurfaceGap(Finger finger, FingerPoint point) => _profile.Shape.Distance(PointInController(finger, point)) - _hand.FingerRadius;
 
         /// <summary>
+        /// How deep (m) the skin of <paramref name="finger"/> lies inside the controller at its deepest after the last solve,
+        /// sampled along its bones from the knuckle (its first joint) to the tip, 0 when it is outside everywhere: the
+        /// solver keeps only the three <see cref="FingerPoint"/>s out, and a straight phalanx between two of them can cross
+        /// a convex handle (a diagnostic, for `avatargo fingers`; not per-frame work). NaN for a finger the rig does not have.
+        /// </summary>
+        public float SkinDepth(Finger finger)
+        {
+            if ((uint)finger > 4) throw new ArgumentOutOfRangeException(nameof(finger), finger, "Not a finger.");
+            int f = (int)finger;
+            if (!_hand.HasFinger[f]) return float.NaN;
+            const int samples = 16;
+            Vector3 from = _fingerBase[f].Position;
+            float depth = 0f;
+            for (int p = 0; p < 3; p++)
+            {
+                Vector3 to = PointInController(finger, (FingerPoint)p);
+                for (int i = p == 0 ? 0 : 1; i <= samples; i++)
+                    depth = Math.Max(depth, _hand.FingerRadius - _profile.Shape.Distance(Vector3.Lerp(from, to, i / (float)samples)));
+                from = to;
+            }
+            return depth;
+        }
+
+        /// <summary>
         /// How far (m) the fingertip of the thumb or the index is, after the last solve, from resting on the thumb rest or
         /// the trigger: the distance from the fingertip's centre to its goal, the profile's point lifted one finger radius
         /// off the surface (where the fingertip's centre is when its pad touches the point). NaN when the rig has no such finger.

@@ -23,14 +23,16 @@ public sealed class FingersCommand : ICommand
         hand (default: the reference hand built in code, ReferenceHandRig, and the Mixamo hand of the
         clip mixamo_fingers_30fps.bvh the package ships in Tests/Core/Data~; a BVH rig's hand opened as the
         pipeline opens it, from its calibration T-pose) while the controller wobbles in
-        the hand for two seconds (2 mm, 3 deg), solving at 72,
-        90 and 144 Hz, and reports per profile and hand: the deepest penetration of a finger into the
-        surface (mm), the median and largest fingertip gap (mm), iterations and microseconds per frame
-        for both hands, bytes allocated per frame, and the largest difference in the final joint
-        parameters t between the three frame rates. Fingertip gaps are of the four fingers; the thumb
-        tip's gap is reported apart (thumb_gap_median_mm; with --json every fingertip's median and
-        largest gap too, thumb first: tip_gap_median_mm_by_finger, tip_gap_max_mm_by_finger), with how far (median) the thumb's and the
-        index's pads are from resting on the profile's thumb rest and trigger (FingerSolver.GoalDistance).
+        the hand for two seconds (2 mm, 3 deg), solving at 72, 90 and 144 Hz, and reports per profile and
+        hand: the deepest penetration of a finger into the surface at the three points the IK keeps out
+        (mm); the deepest skin anywhere along the fingers, knuckle to tip (skin depth, mm: a straight
+        phalanx between two of those points can cross the handle); the median and largest fingertip gap
+        (mm), iterations and microseconds per frame for both hands, bytes allocated per frame, and the
+        largest difference in the final joint parameters t between the three frame rates. Fingertip gaps
+        are of the four fingers; the thumb tip's gap is reported apart (thumb_gap_median_mm; with --json
+        every fingertip's median and largest gap too, thumb first: tip_gap_median_mm_by_finger,
+        tip_gap_max_mm_by_finger), with how far (median) the thumb's and the index's pads are from resting
+        on the profile's thumb rest and trigger (FingerSolver.GoalDistance).
           --profile NAME   only this profile (file name without .json)
           --hand WHICH     only this hand: "reference", or a BVH file of a rig with finger bones
           --json           print JSON
@@ -70,10 +72,10 @@ public sealed class FingersCommand : ICommand
             return 0;
         }
         stdout.WriteLine("controller wobbling 2 mm / 3 deg in the hand for 2 s; fingertip gaps of the four fingers; the thumb's apart");
-        stdout.WriteLine("rig                        profile       hand   penetration  tip gap median/max   thumb gap  thumb-rest  index-trigger  iterations  us/frame  bytes/frame  max dt(72,90,144 Hz)");
+        stdout.WriteLine("rig                        profile       hand   penetration  skin depth  tip gap median/max   thumb gap  thumb-rest  index-trigger  iterations  us/frame  bytes/frame  max dt(72,90,144 Hz)");
         foreach (var r in rows)
             stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"{r["rig"],-26} {r["profile"],-13} {r["hand"],-6} {r["max_penetration_mm"],8:0.00} mm   {r["tip_gap_median_mm"],6:0.0} / {r["tip_gap_max_mm"],-6:0.0} mm {r["thumb_gap_median_mm"],6:0.0} mm {r["thumb_to_rest_median_mm"],7:0.0} mm {r["index_to_trigger_median_mm"],9:0.0} mm  {r["iterations_per_frame"],9:0.0} {r["us_per_frame"],9:0.0} {r["bytes_per_frame"],10:0} {r["max_t_difference"],12:0.000}"));
+                $"{r["rig"],-26} {r["profile"],-13} {r["hand"],-6} {r["max_penetration_mm"],8:0.00} mm {r["max_skin_depth_mm"],7:0.0} mm   {r["tip_gap_median_mm"],6:0.0} / {r["tip_gap_max_mm"],-6:0.0} mm {r["thumb_gap_median_mm"],6:0.0} mm {r["thumb_to_rest_median_mm"],7:0.0} mm {r["index_to_trigger_median_mm"],9:0.0} mm  {r["iterations_per_frame"],9:0.0} {r["us_per_frame"],9:0.0} {r["bytes_per_frame"],10:0} {r["max_t_difference"],12:0.000}"));
         return 0;
     }
 
@@ -87,7 +89,7 @@ public sealed class FingersCommand : ICommand
         RigidPose inHand = hand.ControllerInHand(profile);
         int[] rates = { 72, 90, 144 };
         var finals = new float[rates.Length][];
-        double penetration = 0;
+        double penetration = 0, skinDepth = 0;
         long bytes = 0;
         int frames = 0, iterations = 0;
         var gaps = new List<double>();
@@ -114,6 +116,7 @@ public sealed class FingersCommand : ICommand
                 {
                     if (!hand.Has((Finger)f)) continue;
                     for (int p = 0; p < 3; p++) penetration = Math.Max(penetration, -solver.SurfaceGap((Finger)f, (FingerPoint)p));
+                    skinDepth = Math.Max(skinDepth, solver.SkinDepth((Finger)f));
                     byFinger[f].Add(Math.Abs(solver.SurfaceGap((Finger)f, FingerPoint.Tip)) * 1000.0); // a tip inside the surface is off it too
                     if (f > 0) gaps.Add(solver.SurfaceGap((Finger)f, FingerPoint.Tip) * 1000.0);
                     else thumbGaps.Add(solver.SurfaceGap((Finger)f, FingerPoint.Tip) * 1000.0);
@@ -153,6 +156,7 @@ public sealed class FingersCommand : ICommand
             ["profile"] = profile.Name,
             ["hand"] = left ? "left" : "right",
             ["max_penetration_mm"] = penetration * 1000.0,
+            ["max_skin_depth_mm"] = skinDepth * 1000.0,
             ["tip_gap_median_mm"] = gaps[gaps.Count / 2],
             ["tip_gap_max_mm"] = gaps[^1],
             // Per fingertip, thumb first (null for a finger the rig does not have).

@@ -24,6 +24,10 @@ public class FingersCommandTests : TempFolderTests
             Assert.That(row.GetProperty("tip_gap_median_mm").GetDouble(), Is.LessThanOrEqualTo(3.0), what);
             Assert.That(row.GetProperty("thumb_gap_median_mm").GetDouble(), Is.LessThanOrEqualTo(3.0), what);
             Assert.That(row.GetProperty("max_penetration_mm").GetDouble(), Is.LessThanOrEqualTo(1.0), what);
+            // The skin between the points sees at least what the points see, and no bone lies inside (the reference hand's
+            // finger radius is 8.5 mm).
+            double skin = row.GetProperty("max_skin_depth_mm").GetDouble();
+            Assert.That(skin, Is.GreaterThanOrEqualTo(row.GetProperty("max_penetration_mm").GetDouble() - 1e-3).And.LessThan(8.5), what + ": skin depth");
             var medians = row.GetProperty("tip_gap_median_mm_by_finger");
             Assert.That(medians.GetArrayLength(), Is.EqualTo(5), what);
             foreach (var m in medians.EnumerateArray()) Assert.That(m.GetDouble(), Is.LessThanOrEqualTo(3.0), what + ": every fingertip");
