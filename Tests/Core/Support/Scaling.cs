@@ -23,8 +23,14 @@ namespace AvatarGo.Core.Tests
         {
             T small = make(n), large = make(4 * n);
             work(small); // warm up (JIT)
-            double ts = BestOf(3, () => work(small), hardLimitMs, what);
-            double tl = BestOf(3, () => work(large), hardLimitMs, what);
+            double ts = 0, tl = double.MaxValue;
+            // A machine starved by other work can slow one size's three runs alike (a CI run beside other jobs measured
+            // 73 ms against 2.4 for a linear reader once): the pair is timed up to three times; quadratic work fails each.
+            for (int attempt = 0; attempt < 3 && !(tl < 8 * ts + 50); attempt++)
+            {
+                ts = BestOf(3, () => work(small), hardLimitMs, what);
+                tl = BestOf(3, () => work(large), hardLimitMs, what);
+            }
             Assert.That(tl, Is.LessThan(8 * ts + 50),
                 $"{what}: {tl:0.0} ms at {4 * n} against {ts:0.0} ms at {n}: grows faster than linearly (linear: about 4x, quadratic: 16x)");
         }
