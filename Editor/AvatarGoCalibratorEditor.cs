@@ -7,7 +7,7 @@ namespace AvatarGo.Editor
 {
     /// <summary>
     /// The calibrator's inspector: the assigned avatar checked by <see cref="AvatarSetupCheck"/> (from the Animator:
-    /// humanoid, bones, fingers, scale, culling, root motion) and the tracking setup by <see cref="TrackingSetupCheck"/>,
+    /// humanoid, bones, fingers, scale, culling, root motion, whether the calibrator can bind it) and the tracking setup by <see cref="TrackingSetupCheck"/>,
     /// each finding a help box with a Fix button where one is possible (applied with Undo); the default inspector below.
     /// </summary>
     [CustomEditor(typeof(AvatarGoCalibrator))]
@@ -55,6 +55,8 @@ namespace AvatarGo.Editor
                 float feet = left == null ? right.position.y : right == null ? left.position.y : System.Math.Min(left.position.y, right.position.y);
                 facts.HeadAboveFeet = head.position.y - feet;
             }
+            // What Start will do with it: the binding's own checks (every bone's scale within 0.1 %, bones below the Animator).
+            if (!HumanoidBinding.TryBind(animator, out _, out string bindError)) facts.BindError = bindError;
             return facts;
         }
 

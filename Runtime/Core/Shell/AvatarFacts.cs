@@ -32,5 +32,12 @@ namespace AvatarGo.Core
 
         /// <summary>The Animator applies root motion.</summary>
         public bool AppliesRootMotion { get; set; }
+
+        /// <summary>
+        /// Why the calibrator cannot bind the avatar when it starts (the reason <c>HumanoidBinding.TryBind</c> gives: a bone
+        /// or the Animator's own transform with a non-uniform scale, a bone outside the Animator's hierarchy...), or null when
+        /// it can or this was not asked.
+        /// </summary>
+        public string BindError { get; set; }
     }
 }

@@ -7,7 +7,7 @@ namespace AvatarGo.Core
     /// <summary>
     /// Checks an avatar before it is driven, the way the avatar inspector shows it: is it a humanoid with the bones the
     /// pipeline needs, which hands get finger IK, is its scale one the calibration can work with, and is its Animator
-    /// set up so IK runs every frame. Engine-free: the inspector fills <see cref="AvatarFacts"/> and draws the findings.
+    /// set up so IK runs every frame, and would the calibrator bind it (<see cref="AvatarFacts.BindError"/>). Engine-free: the inspector fills <see cref="AvatarFacts"/> and draws the findings.
     /// </summary>
     public static class AvatarSetupCheck
     {
@@ -35,6 +35,9 @@ namespace AvatarGo.Core
             {
                 CheckBones(facts, findings);
                 CheckScale(facts, findings);
+                // What the binding refuses and no finding above names (its scale tolerance is 0.1 %, and it checks every bone's).
+                if (!string.IsNullOrEmpty(facts.BindError) && !findings.Exists(f => f.Severity == SetupSeverity.Error))
+                    findings.Add(new SetupFinding(SetupSeverity.Error, $"The calibrator cannot bind this avatar and disables itself when Play starts: {facts.BindError}."));
                 if (!facts.CullsAlwaysAnimate)
                     findings.Add(new SetupFinding(SetupSeverity.Warning, "The Animator's Culling Mode is not Always Animate: IK stops whenever the avatar is out of every camera's view (the wearer's own body often is).", SetupFix.CullAlwaysAnimate));
                 if (facts.AppliesRootMotion)
@@ -82,7 +85,9 @@ namespace AvatarGo.Core
             else if (s.X < 0f || s.Y < 0f || s.Z < 0f)
                 findings.Add(new SetupFinding(SetupSeverity.Error, $"The avatar's scale {Format(s)} mirrors it: left and right would swap. Use a positive scale."));
             else if (largest - smallest > UniformScaleTolerance * largest)
-                findings.Add(new SetupFinding(SetupSeverity.Warning, $"The avatar's scale {Format(s)} is not uniform: bones stretch as they turn. Calibration scales the avatar uniformly to the wearer anyway.", SetupFix.MakeScaleUniform));
+                findings.Add(string.IsNullOrEmpty(facts.BindError)
+                    ? new SetupFinding(SetupSeverity.Warning, $"The avatar's scale {Format(s)} is not uniform: bones stretch as they turn. Calibration scales the avatar uniformly to the wearer anyway.", SetupFix.MakeScaleUniform)
+                    : new SetupFinding(SetupSeverity.Error, $"The avatar's scale {Format(s)} is not uniform, and the calibrator cannot bind it: {facts.BindError}.", SetupFix.MakeScaleUniform));
             // Without the head or both feet there is no height to judge (the missing bones are reported already).
             if (!facts.Bones.Contains(HumanoidBone.Head) || !(facts.Bones.Contains(HumanoidBone.LeftFoot) || facts.Bones.Contains(HumanoidBone.RightFoot))) return;
             float h = facts.HeadAboveFeet;

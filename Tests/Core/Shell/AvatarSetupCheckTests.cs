@@ -93,6 +93,33 @@ namespace AvatarGo.Core.Tests
             Assert.That(AvatarSetupCheck.Check(facts).Single(f => f.Severity == SetupSeverity.Error).Message, Does.Contain("mirrors"));
         }
 
+        /// <summary>
+        /// A rig the calibrator's binding refuses is an error (found in review: the binding wants every bone's scale, the
+        /// Animator's own transform included, uniform within 0.1 %, the inspector looked at the world scale only, within 1 %:
+        /// a root scaled (1, 1.005, 1) or hips scaled (1, 1.2, 1) had no finding, a root scaled (1, 1.2, 1) a warning saying
+        /// the calibration works anyway, and the calibrator disabled itself at Start).
+        /// </summary>
+        [TestCase("root", 1.005f)]
+        [TestCase("root", 1.2f)]
+        [TestCase("hips", 1.2f)]
+        public void ARigTheCalibratorCannotBindIsAnError(string node, float yScale)
+        {
+            AvatarFacts facts = FactsOf("mixamo_fingers_30fps.bvh");
+            HumanoidMap map = HumanoidNaming.Detect(BvhReader.ReadFile(TestData.Mocap("mixamo_fingers_30fps.bvh"), new BvhReadOptions { ToMetres = true }).Skeleton);
+            EngineHierarchy engine = EngineHierarchy.FromSkeleton(map, Quaternion.Identity, 1f);
+            var scale = new Vector3(1f, yScale, 1f);
+            engine.LocalScales[node == "root" ? 0 : engine.BoneNodes[(int)HumanoidBone.Hips]] = scale;
+            if (node == "root") facts.LossyScale = scale;
+            // What the inspector reads from the binding (HumanoidBinding.TryBind: the same core check on the same transforms).
+            Assert.That(HumanoidHierarchy.TryFromBones(engine.Read(), engine.BoneNodes, 1f, out _, out string bindError), Is.False);
+            facts.BindError = bindError;
+            SetupFinding error = AvatarSetupCheck.Check(facts).Single(f => f.Severity == SetupSeverity.Error);
+            Assert.That(error.Message, Does.Contain("cannot bind").And.Contain(bindError));
+            Assert.That(AvatarSetupCheck.Check(facts).Where(f => f.Message.Contains("anyway")), Is.Empty, "no claim that the calibration works");
+            facts.BindError = null;
+            Assert.That(AvatarSetupCheck.Check(facts).Where(f => f.Severity == SetupSeverity.Error), Is.Empty, "a rig that binds has none");
+        }
+
         [Test]
         public void AnimatorSettingsThatStopTheIkHaveFixes()
         {
