@@ -54,6 +54,21 @@ public class ManualTests
         Assert.That(problems, Is.Empty, string.Join("\n", problems));
     }
 
+    /// <summary>
+    /// The wearer's page lists every message a refused step can show, as the core words it (found in review: "every
+    /// message" lacked NotInsideAvatar, the walk-in refused from too far, and AvatarScaleOutOfRange).
+    /// </summary>
+    [Test]
+    public void TheHeadsetPageHasEveryRefusalsMessage()
+    {
+        string page = File.ReadAllText(Path.Combine(Docs, "headset-calibration.md"));
+        var missing = new List<string>();
+        foreach (AvatarGo.Core.CalibrationError error in Enum.GetValues(typeof(AvatarGo.Core.CalibrationError)))
+            if (error != AvatarGo.Core.CalibrationError.None && !page.Contains($"| `{error}` | {AvatarGo.Core.CalibrationMessages.For(error)} |", StringComparison.Ordinal))
+                missing.Add($"{error}: {AvatarGo.Core.CalibrationMessages.For(error)}");
+        Assert.That(missing, Is.Empty, "rows of headset-calibration.md's message table missing or worded otherwise");
+    }
+
     [Test]
     public void TheQuickStartsMenusAndComponentsAreTheCodes()
     {
