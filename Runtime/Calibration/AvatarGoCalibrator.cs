@@ -468,13 +468,14 @@ namespace AvatarGo
             double now = _hasFrame ? _frame.Time : 0.0;
             if (old != null && old.State == CalibrationState.Calibrated && old.Profile != null)
             {
-                if (_pipeline.TryRestore(old.Profile))
+                if (_pipeline.TryRestore(old.Profile, out string why))
                 {
                     _refinement.AfterUpdate(now, _pipeline, _flow.Restored(now));
                     Debug.Log($"{nameof(AvatarGoCalibrator)}: the devices changed; the calibration is kept (its devices are all still there).", this);
                     return;
                 }
-                Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: a calibrated device is gone; calibrate again.", this);
+                // Why, as the profile says it (not always a device gone: without serials, as with OpenXR, none can be recognised).
+                Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: the devices changed and the calibration cannot be kept: {why}; calibrate again.", this);
             }
             _flow.Reset(now, _pipeline.LastCalibrationStep.Message);
             if (m_RestoreSavedProfile && !_resetByUser) RestoreSavedProfile();
