@@ -51,6 +51,9 @@ namespace AvatarGo.Core
         /// </summary>
         public CalibrationFlowEvents Update(double time, CalibrationStep step, CalibrationState state)
         {
+            // A time that is not a number or infinite (a broken clock, a bad recording) is a frame in which no time passed, as
+            // the pipeline takes it: compared with the confirmation's, it hid the confirmation.
+            if (double.IsNaN(time) || double.IsInfinity(time)) time = _now;
             _now = time;
             if (double.IsNaN(_confirmedAt)) _confirmedAt = time; // a restore's confirmation counts from the first frame after it
             _state = state;

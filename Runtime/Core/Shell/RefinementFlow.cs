@@ -45,6 +45,7 @@ namespace AvatarGo.Core
         private string[] _countdown = Array.Empty<string>();
         private int _shown;
         private double _startedAt, _endsAt, _summaryUntil;
+        private double _lastTime;                         // the last frame time that was a finite number
         private SelfAvatarPipeline _pipeline;
 
         /// <summary>Run the exercise after each new calibration (not after a restored one). Read when a calibration completes.</summary>
@@ -96,6 +97,7 @@ namespace AvatarGo.Core
         public RefinementFlowEvents BeforeUpdate(SessionFrame frame, SelfAvatarPipeline pipeline)
         {
             if (frame == null) throw new ArgumentNullException(nameof(frame));
+            double time = Finite(frame.Time);
             if (Phase != RefinementPhase.Exercising) return RefinementFlowEvents.None;
             if (pipeline == null || !ReferenceEquals(pipeline, _pipeline) || !pipeline.IsRefining)
                 return Drop("the pipeline stopped recording the exercise (it was ended or reset from elsewhere, or the pipeline was made again)");
@@ -105,7 +107,7 @@ namespace AvatarGo.Core
             for (int e = 0; e < list.Count && !pressed; e++)
             {
                 if (list[e].Kind != DeviceEventKind.TriggerPressed) continue;
-                string ignored = WhyIgnored(list[e].DeviceId, frame.Time, pipeline);
+                string ignored = WhyIgnored(list[e].DeviceId, time, pipeline);
                 if (ignored == null) pressed = true;
                 else
                 {
@@ -113,8 +115,17 @@ namespace AvatarGo.Core
                     events |= RefinementFlowEvents.PressIgnored;
                 }
             }
-            if (!pressed && frame.Time < _endsAt) return events;
-            return events | End(pipeline, frame.Time, pressed);
+            if (!pressed && time < _endsAt) return events;
+            return events | End(pipeline, time, pressed);
+        }
+
+        // A time that is not a number or infinite (a broken clock, a bad recording) is a frame in which no time passed, as the
+        // pipeline takes it: compared with the end, it ended the exercise.
+        private double Finite(double time)
+        {
+            if (double.IsNaN(time) || double.IsInfinity(time)) return _lastTime;
+            _lastTime = time;
+            return time;
         }
 
         /// <summary>
@@ -125,6 +136,7 @@ namespace AvatarGo.Core
         /// </summary>
         public RefinementFlowEvents AfterUpdate(double time, SelfAvatarPipeline pipeline, CalibrationFlowEvents calibration)
         {
+            time = Finite(time);
             RefinementFlowEvents events = RefinementFlowEvents.None;
             if ((calibration & (CalibrationFlowEvents.Reset | CalibrationFlowEvents.Restored | CalibrationFlowEvents.Calibrated)) != 0) events |= Cancel(pipeline);
             if ((calibration & CalibrationFlowEvents.Calibrated) != 0 && Enabled) events |= Begin(time, pipeline);

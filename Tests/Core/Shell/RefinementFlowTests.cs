@@ -196,6 +196,54 @@ namespace AvatarGo.Core.Tests
             Assert.That(report.Changed, Is.True, $"4 s of the exercise are enough here ({report})");
         }
 
+        /// <summary>
+        /// A frame whose time is not a number (a broken clock, a bad recording: the pipeline takes it as a frame in which no
+        /// time passed) neither ends the exercise nor breaks its countdown (found in review: NaN compared false with the end
+        /// time, so it ended the exercise on that frame, "on time after NaN s", with what was recorded so far).
+        /// </summary>
+        [Test]
+        public void AFrameWithoutATimeDoesNotEndTheExercise()
+        {
+            var run = new Run(ScaleMode.Uniform);
+            double began = double.NaN, ended = double.NaN;
+            bool broken = false;
+            while (run.Read() && double.IsNaN(ended))
+            {
+                if (!broken && run.Frame.Time - began >= 2.0)
+                {
+                    run.Frame.Time = double.NaN;
+                    broken = true;
+                    (_, RefinementFlowEvents atNaN) = run.Step();
+                    Assert.That(atNaN & RefinementFlowEvents.Ended, Is.EqualTo(RefinementFlowEvents.None), run.Refinement.Explanation);
+                    Assert.That(run.Refinement.Phase, Is.EqualTo(RefinementPhase.Exercising));
+                    Assert.That(run.Refinement.SecondsLeft, Is.InRange(6.0, 6.0 + 1.5 / 90), "the previous frame's time counts");
+                    Assert.That(run.Refinement.Message, Is.EqualTo(RefinementFlow.Countdown(7)));
+                    continue;
+                }
+                (_, RefinementFlowEvents events) = run.Step();
+                if ((events & RefinementFlowEvents.Began) != 0) began = run.Frame.Time;
+                if ((events & RefinementFlowEvents.Ended) != 0) ended = run.Frame.Time;
+            }
+            Assert.That(broken, Is.True);
+            Assert.That(ended - began, Is.EqualTo(8.0).Within(1.0 / 90 + 1e-9), "ends when the 8 s are up");
+        }
+
+        /// <summary>The calibration's confirmation stays up through a frame without a time, as it would with one.</summary>
+        [Test]
+        public void AFrameWithoutATimeKeepsTheConfirmation()
+        {
+            var flow = new CalibrationFlow();
+            var calibrated = new CalibrationStep(CalibrationState.Calibrated, CalibrationStepOutcome.Advanced, CalibrationError.None, "Calibrated.", null);
+            var waiting = new CalibrationStep(CalibrationState.Calibrated, CalibrationStepOutcome.Waiting, CalibrationError.None, "Calibrated.", null);
+            flow.Update(10.0, calibrated, CalibrationState.Calibrated);
+            flow.Update(double.NaN, waiting, CalibrationState.Calibrated);
+            Assert.That(flow.Message, Is.EqualTo(CalibrationFlow.CalibratedMessage), "1 s or 0 s after calibrating, not hidden");
+            flow.Update(12.0, waiting, CalibrationState.Calibrated);
+            Assert.That(flow.Message, Is.EqualTo(CalibrationFlow.CalibratedMessage));
+            flow.Update(14.1, waiting, CalibrationState.Calibrated);
+            Assert.That(flow.Message, Is.Empty, "gone after its 4 s");
+        }
+
         /// <summary>Fitted proportions already right within the tolerance: the exercise keeps both arms and says so.</summary>
         [Test]
         public void ARightFitIsKeptAndSaysSo()
