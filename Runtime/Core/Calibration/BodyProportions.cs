@@ -52,7 +52,8 @@ namespace AvatarGo.Core
         /// <summary>
         /// The factor each joint's local position (its offset from its parent) is multiplied by, relative to the unscaled
         /// avatar, for <paramref name="map"/>'s skeleton: <paramref name="overallScale"/> times the leg ratio for the knees
-        /// and ankles, times the arm ratio for the elbows and wrists, and the overall scale for every other joint. Applying
+        /// and ankles, times the arm ratio for the elbows and wrists (and for the joints between them and the joint above,
+        /// such as twist joints inserted along a thigh or forearm), and the overall scale for every other joint. Applying
         /// it to a hierarchy's local positions (rotations untouched) gives the fitted avatar in any pose: what a Unity
         /// shell does to the bone transforms at runtime (with <paramref name="overallScale"/> 1 when the root carries the
         /// uniform scale as its local scale). A new array, one factor per joint.
@@ -83,17 +84,23 @@ namespace AvatarGo.Core
             for (int s = 0; s < 2; s++)
             {
                 var side = (BodySide)s;
-                Set(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, side), overallScale * Leg(side));
-                Set(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftFoot, side), overallScale * Leg(side));
-                Set(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side), overallScale * Arm(side));
-                Set(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftHand, side), overallScale * Arm(side));
+                SetSegment(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftUpperLeg, side), HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, side), overallScale * Leg(side));
+                SetSegment(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftLowerLeg, side), HumanoidBones.OnSide(HumanoidBone.LeftFoot, side), overallScale * Leg(side));
+                SetSegment(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftUpperArm, side), HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side), overallScale * Arm(side));
+                SetSegment(map, factors, HumanoidBones.OnSide(HumanoidBone.LeftLowerArm, side), HumanoidBones.OnSide(HumanoidBone.LeftHand, side), overallScale * Arm(side));
             }
         }
 
-        private static void Set(HumanoidMap map, Span<float> factors, HumanoidBone bone, float factor)
+        // Every joint from the segment's end up to, not including, its start: the end joint itself and the joints between
+        // (twist joints inserted along the bone, as Daz Genesis' lThighTwist above lShin), so that the whole bone takes the
+        // ratio; with only the end joint, a twist joint halfway along halved the change.
+        private static void SetSegment(HumanoidMap map, Span<float> factors, HumanoidBone start, HumanoidBone end, float factor)
         {
-            int j = map[bone];
-            if (j >= 0) factors[j] = factor;
+            int first = map[start], last = map[end];
+            if (last < 0) return;
+            factors[last] = factor;
+            if (first < 0 || first == last || !map.Skeleton.IsAncestorOrSelf(first, last)) return;
+            for (int k = map.Skeleton.GetParent(last); k != first; k = map.Skeleton.GetParent(k)) factors[k] = factor;
         }
 
         /// <summary>

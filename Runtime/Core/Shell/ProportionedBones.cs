@@ -5,8 +5,9 @@ namespace AvatarGo.Core
 {
     /// <summary>
     /// What a Unity shell writes to a bound avatar's bone transforms so that the avatar has the calibration's fitted
-    /// proportions (<see cref="BodyProportions"/>): the knees, ankles, elbows and wrists (the only joints whose factor is
-    /// not the overall scale, which the root's <c>localScale</c> carries) each get its bind local position times its
+    /// proportions (<see cref="BodyProportions"/>): the knees, ankles, elbows and wrists and the joints between them and the
+    /// joint above, such as twist joints along a limb (the only joints whose factor is not the overall scale, which the
+    /// root's <c>localScale</c> carries) each get its bind local position times its
     /// factor (<see cref="BodyProportions.LocalPositionFactors(HumanoidMap, float, Span{float})"/> with overall scale 1),
     /// and their bind positions back when the proportions become uniform, the calibration is reset, or the shell is
     /// disabled. The shell only copies <see cref="LocalPosition"/> of each <see cref="Joint"/> to its transform.
@@ -30,16 +31,16 @@ namespace AvatarGo.Core
             int n = map.Skeleton.JointCount;
             if (bindLocalPositions.Length != n) throw new ArgumentException($"Expected {n} bind positions, got {bindLocalPositions.Length}.", nameof(bindLocalPositions));
             _factors = new float[n];
-            var managed = new int[8];
+            // The joints whose factor is not the overall scale's under some proportions: found with every ratio 2.
+            new BodyProportions(2f, 2f, 2f, 2f).LocalPositionFactors(map, 1f, _factors);
+            var managed = new int[n];
             int count = 0;
-            for (int s = 0; s < 2; s++)
-                foreach (HumanoidBone bone in ManagedBones)
-                {
-                    int j = map[HumanoidBones.OnSide(bone, (BodySide)s)];
-                    if (j <= 0) continue; // missing (or the root, whose scale is the overall scale's)
-                    if (!Vectors.IsFinite(bindLocalPositions[j])) throw new ArgumentException($"The bind position of {map.Skeleton.GetName(j)} is not finite.", nameof(bindLocalPositions));
-                    managed[count++] = j;
-                }
+            for (int j = 1; j < n; j++) // not the root, whose scale is the overall scale's
+            {
+                if (_factors[j] == 1f) continue;
+                if (!Vectors.IsFinite(bindLocalPositions[j])) throw new ArgumentException($"The bind position of {map.Skeleton.GetName(j)} is not finite.", nameof(bindLocalPositions));
+                managed[count++] = j;
+            }
             _joints = new int[count];
             _bind = new Vector3[count];
             _positions = new Vector3[count];
@@ -51,12 +52,10 @@ namespace AvatarGo.Core
             Applied = BodyProportions.Uniform;
         }
 
-        private static readonly HumanoidBone[] ManagedBones = { HumanoidBone.LeftLowerLeg, HumanoidBone.LeftFoot, HumanoidBone.LeftLowerArm, HumanoidBone.LeftHand };
-
         /// <summary>The proportions the positions are for (uniform: the bind positions).</summary>
         public BodyProportions Applied { get; private set; }
 
-        /// <summary>How many transforms this manages (up to 8: both knees, ankles, elbows and wrists that the rig has).</summary>
+        /// <summary>How many transforms this manages: both knees, ankles, elbows and wrists that the rig has, and the joints between them and the joint above (twist joints along the limbs).</summary>
         public int Count => _joints.Length;
 
         /// <summary>The joint (of the map, so of the binding) of the <paramref name="index"/>-th managed transform.</summary>
