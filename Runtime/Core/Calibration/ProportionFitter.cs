@@ -109,6 +109,28 @@ namespace AvatarGo.Core
             // The overall scale for the ratios kept (a side kept, a ratio limited): the eyes match again.
             if (!limited.IsUniform) Solve(avatar, features, limited, s, false, false, false, gripBand, out s, out _);
             else s = s0;
+            // The arms' ratios are of the overall scale, which the legs' fit moves: a kept arm keeps the uniform avatar's
+            // length, whose reach matched the wearer's (ratio 1 of the new scale shortened it with the torso: legs held at
+            // 1.25, 9.7 cm of reach lost), and is refitted when the torso's new width still makes it miss the reach by more
+            // than its uncertainty; refitted arms are solved again (and limited again) when the legs' limit moved the scale after them.
+            if (legs)
+            {
+                float kept = Limit(s0 / s, settings);
+                limited = new BodyProportions(limited.LeftLeg, limited.RightLeg, leftArm ? limited.LeftArm : kept, rightArm ? limited.RightArm : kept);
+                AvatarShape legsFitted = Shape(avatar, limited, s);
+                float missLeft = LevelReach(legsFitted, 1f, features, BodySide.Left, gripBand) - legsFitted.Features.LeftReach;
+                float missRight = LevelReach(legsFitted, 1f, features, BodySide.Right, gripBand) - legsFitted.Features.RightReach;
+                bool legsLimited = limited.LeftLeg != chosen.LeftLeg || limited.RightLeg != chosen.RightLeg;
+                bool againLeft = leftArm ? legsLimited : Math.Abs(settings.PerSide ? missLeft : 0.5f * (missLeft + missRight)) > armBand;
+                bool againRight = rightArm ? legsLimited : Math.Abs(settings.PerSide ? missRight : 0.5f * (missLeft + missRight)) > armBand;
+                if (againLeft || againRight)
+                {
+                    BodyProportions again = Solve(avatar, features, limited, s, false, true, settings.PerSide, gripBand, out s, out _);
+                    limited = new BodyProportions(limited.LeftLeg, limited.RightLeg, againLeft ? Limit(again.LeftArm, settings) : limited.LeftArm, againRight ? Limit(again.RightArm, settings) : limited.RightArm);
+                }
+                if (!leftArm || !rightArm)
+                    why.Append(FormattableString.Invariant($"; kept arms {(againLeft && !leftArm || againRight && !rightArm ? "refitted after the legs (their reach missed by " + (0.5f * (missLeft + missRight) * 100).ToString("+0.0;-0.0;0.0", System.Globalization.CultureInfo.InvariantCulture) + " cm)" : "at the uniform avatar's length")}"));
+            }
             fit.Proportions = limited;
             fit.Scale = s;
             fit.Explanation = why.ToString();

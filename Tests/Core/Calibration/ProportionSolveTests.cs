@@ -63,6 +63,28 @@ namespace AvatarGo.Core.Tests
             }
         }
 
+        // A wearer whose reach is the avatar's but whose hips are higher or lower: the legs are refitted (beyond 1.25 held
+        // there) and the overall scale follows the eyes, so the arms, kept or refitted, are of a new scale. Before, a kept
+        // arm stayed ratio 1 of it and shrank with the torso (hips x1.2: 9.7 cm of reach lost on mocapbank), and arms solved
+        // before the legs were held kept the ratio of the scale before (a Rigify avatar on the MocapBank wearer: arm span
+        // +19.8 cm, now -0.3).
+        [Test]
+        public void TheArmsKeepTheWearersReachWhenTheLegsAreRefitted(
+            [Values("mocapbank_30fps.bvh", "mixamo_fingers_30fps.bvh")] string clip, [Values(0.94f, 1.08f, 1.2f)] float hips, [Values(0.95f, 1f)] float reach)
+        {
+            HumanoidMap avatar = Avatar(clip);
+            BodyFeatures own = ProportionFitter.Shape(avatar, BodyProportions.Uniform, 1f).Features;
+            var wearer = new BodyFeatures(own.Eye, hips * own.Hips, reach * own.LeftReach, reach * own.RightReach, own.LeftGripHeight, own.RightGripHeight);
+            ProportionFit fit = ProportionFitter.Fit(avatar, wearer, new ProportionSettings { Mode = ScaleMode.Fitted });
+            BodyFeatures f = ProportionFitter.Shape(avatar, fit.Proportions, fit.Scale).Features;
+            string what = $"{clip} hips x{hips} reach x{reach}: {fit.Proportions}, scale {fit.Scale:0.0000} ({fit.Explanation})";
+            TestContext.WriteLine($"{what}: reach {f.LeftReach * 1000:0.0} / {f.RightReach * 1000:0.0} mm, the wearer's {wearer.LeftReach * 1000:0.0}");
+            Assert.That(fit.Proportions.LeftLeg, Is.Not.EqualTo(1f), what);
+            Assert.That(f.Eye, Is.EqualTo(wearer.Eye).Within(2e-5), what);
+            Assert.That(f.LeftReach, Is.EqualTo(wearer.LeftReach).Within(5e-3), $"{what}: left reach (m)");
+            Assert.That(f.RightReach, Is.EqualTo(wearer.RightReach).Within(5e-3), $"{what}: right reach (m)");
+        }
+
         // A grip's distance from the avatar's shoulder (the upper arm joint) in the body's frontal plane, from its reach along
         // the shoulder line and its height; a wearer's grip height counts only beyond `band` from the avatar's own grip's
         // (what the fitter reads as arms held below or above level).
