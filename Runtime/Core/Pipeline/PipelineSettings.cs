@@ -43,6 +43,21 @@ namespace AvatarGo.Core
                 : throw new ArgumentOutOfRangeException(nameof(value), value, "The shrug release time must be 0 or more seconds.");
         }
 
+        private float _spineChordNoiseMetres = FullBodyIk.DefaultChordNoiseMetres;
+
+        /// <summary>
+        /// The change in the hips-to-head distance that the back does not flex for (metres,
+        /// <see cref="FullBodyIk.DefaultChordNoiseMetres"/>: the noise of two 1 mm devices; 0 for noise-free targets);
+        /// <see cref="FullBodyIk.ChordNoiseMetres"/>. Read when calibration completes.
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
+        public float SpineChordNoiseMetres
+        {
+            get => _spineChordNoiseMetres;
+            set => _spineChordNoiseMetres = value >= 0f && !float.IsInfinity(value) ? value
+                : throw new ArgumentOutOfRangeException(nameof(value), value, "The spine's chord noise must be 0 or more metres.");
+        }
+
         /// <summary>The left hand's controller and grip.</summary>
         public HandSettings LeftHand { get; } = new HandSettings();
 

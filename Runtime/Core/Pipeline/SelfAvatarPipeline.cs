@@ -341,6 +341,7 @@ namespace AvatarGo.Core
                 _window = new SampleWindow(_devices.Length, Settings.Calibration);
             }
             _ik.ShrugReleaseSeconds = Settings.ShrugReleaseSeconds;
+            _ik.ChordNoiseMetres = Settings.SpineChordNoiseMetres;
             TrackingSettings tracking = Settings.Tracking;
             _smoothing = tracking.Smoothing ? new OneEuroFilter(_devices.Length, tracking.SmoothingMinCutoff, tracking.SmoothingBeta) : null;
             _accepted = new DeviceSample[_devices.Length];

