@@ -39,6 +39,8 @@ namespace AvatarGo.Core
         private int _lineLength;
         private int _tokenCount;
         private int _lineNumber;
+        private bool _lineEnded; // the current physical line ended with LF (the text did not stop inside it)
+        private bool _contentLineEnded; // the same of the last line that was not blank or a comment
         private bool _unread;
         private FormatException _failure;
         private double _lastTime = double.NegativeInfinity;
@@ -177,6 +179,10 @@ namespace AvatarGo.Core
             }
             for (int i = 0; i < _seen.Length; i++)
                 if (!_seen[i]) throw Error(_unread ? _lineNumber : _lineNumber + 1, $"the frame at line {frameLine} has no pose for device {Header.Devices[i].Id}{(_unread ? "" : " (truncated?)")}");
+            // The text stopped inside the frame's last line: a crash may have cut it inside a number that still parses
+            // ("0.95" cut to "0.9"), so the frame may hold values never written. Only the end line may lack its line end.
+            if (!_unread && !_contentLineEnded)
+                throw Error(_lineNumber, $"the file ends inside this line, in the frame at line {frameLine}, without its 'end' line (truncated?)");
             FrameCount++;
             return true;
         }
@@ -360,7 +366,11 @@ namespace AvatarGo.Core
             while (ReadRawLine())
             {
                 Tokenise();
-                if (_tokenCount > 0 && _buffer[_starts[0]] != '#') return true;
+                if (_tokenCount > 0 && _buffer[_starts[0]] != '#')
+                {
+                    _contentLineEnded = _lineEnded;
+                    return true;
+                }
             }
             return false;
         }
@@ -382,6 +392,7 @@ namespace AvatarGo.Core
                 {
                     int end = newline >= 0 ? _bufferPos + newline : _bufferEnd;
                     _lineStart = _bufferPos;
+                    _lineEnded = newline >= 0;
                     _bufferPos = newline >= 0 ? end + 1 : end;
                     if (end > _lineStart && _buffer[end - 1] == '\r') end--;
                     _lineLength = end - _lineStart;

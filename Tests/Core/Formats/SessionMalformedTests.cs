@@ -33,11 +33,11 @@ namespace AvatarGo.Core.Tests
         private static int IndexOf(List<string> lines, string prefix, int nth = 0) =>
             lines.Select((l, i) => (l, i)).Where(x => x.l.StartsWith(prefix)).ElementAt(nth).i;
 
-        private static void AssertFailsAtLine(List<string> lines, int line, string because)
+        private static void AssertFailsAtLine(List<string> lines, int line, string because, string lineEnd = "")
         {
             var e = Assert.Throws<FormatException>(() =>
             {
-                using var r = new SessionReader(new StringReader(string.Join("\n", lines)), "broken.agsession");
+                using var r = new SessionReader(new StringReader(string.Join("\n", lines) + lineEnd), "broken.agsession");
                 var f = r.CreateFrame();
                 while (r.ReadFrame(f)) { }
             }, because);
@@ -74,7 +74,8 @@ namespace AvatarGo.Core.Tests
         {
             var l = ValidLines();
             int i = IndexOf(l, "frame", 4);
-            AssertFailsAtLine(l.Take(i).ToList(), i + 1, "no end line");
+            AssertFailsAtLine(l.Take(i).ToList(), i + 1, "no end line", "\n");
+            AssertFailsAtLine(l.Take(i).ToList(), i, "the text stops inside the last frame's last line (no line end)");
             AssertFailsAtLine(l.Take(i + 2).ToList(), i + 3, "last frame lacks device 1");
         }
 
@@ -252,10 +253,10 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void ATruncatedRecordingGivesEveryWholeFrameThenKeepsFailing()
         {
-            // A recorder that crashed: the file stops after frame 3's lines, with no 'end' line.
+            // A recorder that crashed: the file stops after frame 3's lines (and their line ends), with no 'end' line.
             var l = ValidLines();
             int cut = IndexOf(l, "frame", 3);
-            using var r = new SessionReader(new StringReader(string.Join("\n", l.Take(cut))), "crash.agsession");
+            using var r = new SessionReader(new StringReader(string.Join("\n", l.Take(cut)) + "\n"), "crash.agsession");
             var f = r.CreateFrame();
             int n = 0;
             FormatException e = null;
@@ -266,6 +267,67 @@ namespace AvatarGo.Core.Tests
             StringAssert.StartsWith($"crash.agsession:{cut + 1}: ", e.Message);
             var again = Assert.Throws<FormatException>(() => r.ReadFrame(f));
             Assert.That(again.Message, Is.EqualTo(e.Message), "a failed reader does not carry on from an unreliable position");
+        }
+
+        /// <summary>
+        /// Found in review: a recording cut by a crash anywhere in its text gave, as its last frame, values that were never
+        /// recorded: cut inside the last number of a frame's last line ("input 1 0.31 0.95" cut to "input 1 0.31 0.9", a
+        /// quaternion's W cut to "0.965"), the line still parsed and the frame was delivered with grip 0.9 or a rotation
+        /// 0.03° off; SessionPlayback delivers it to the avatar. Now a frame the text ends in the middle of a line is refused
+        /// (only the end line may lack its line end), so every frame delivered holds only what was written; a frame cut at
+        /// a line end may only lack optional lines (analog values not given, events that never came).
+        /// </summary>
+        [Test]
+        public void ARecordingCutAnywhereDeliversOnlyWhatWasWritten()
+        {
+            var h = new SessionHeader(90f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "H"), new DeviceInfo(1, DeviceClass.Controller, "C") });
+            var written = new List<SessionFrame>();
+            var text = new StringWriter();
+            using (var w = new SessionWriter(text, h))
+                for (int i = 0; i < 4; i++)
+                {
+                    var f = new SessionFrame(h) { Time = i / 90.0 };
+                    f.Samples[0] = new DeviceSample(new RigidPose(new Vector3(0.1f * i, 1.7f, 0.25f), Rotations.AngleAxis(30 + i, Vector3.UnitY)), true);
+                    f.Samples[1] = new DeviceSample(new RigidPose(new Vector3(0.3f, 1.2f, 0.4f), Rotations.AngleAxis(30, Vector3.UnitY)), true);
+                    f.Trigger[1] = 0.31f;
+                    f.Grip[1] = 0.95f;
+                    if (i == 2) f.Events.Add(new DeviceEvent(1, DeviceEventKind.TriggerPressed));
+                    w.WriteFrame(f);
+                    written.Add(f);
+                }
+            string whole = text.ToString();
+            int body = whole.IndexOf("frame ", StringComparison.Ordinal);
+            int delivered = 0;
+            for (int cut = body; cut < whole.Length - 1; cut++) // the whole file but its last line end reads whole
+            {
+                using var r = new SessionReader(new StringReader(whole.Substring(0, cut)), "cut.agsession");
+                SessionFrame f = r.CreateFrame();
+                try
+                {
+                    for (int i = 0; r.ReadFrame(f); i++)
+                    {
+                        delivered++;
+                        SessionFrame expected = written[i];
+                        string where = $"cut at character {cut}, frame {i}";
+                        Assert.That(f.Time, Is.EqualTo(expected.Time), where);
+                        for (int d = 0; d < 2; d++)
+                        {
+                            Assert.That(f.Samples[d].IsTracked, Is.EqualTo(expected.Samples[d].IsTracked), where);
+                            Assert.That(f.Samples[d].Pose.Position, Is.EqualTo(expected.Samples[d].Pose.Position), where);
+                            Assert.That(f.Samples[d].Pose.Rotation, Is.EqualTo(expected.Samples[d].Pose.Rotation), where);
+                            Assert.That(float.IsNaN(f.Trigger[d]) || f.Trigger[d] == expected.Trigger[d], Is.True, $"{where}: trigger {f.Trigger[d]}");
+                            Assert.That(float.IsNaN(f.Grip[d]) || f.Grip[d] == expected.Grip[d], Is.True, $"{where}: grip {f.Grip[d]}");
+                        }
+                        Assert.That(f.Events.Count, Is.LessThanOrEqualTo(expected.Events.Count), where);
+                    }
+                    Assert.Fail($"cut at character {cut}: a file without its end line read whole");
+                }
+                catch (FormatException e)
+                {
+                    StringAssert.StartsWith("cut.agsession:", e.Message);
+                }
+            }
+            Assert.That(delivered, Is.GreaterThan(0), "the whole frames before a cut are delivered");
         }
 
         [Test]
