@@ -27,15 +27,19 @@ namespace AvatarGo.Core
         /// <summary>
         /// Records one frame at <paramref name="time"/> (any clock; the session's times start at 0 with the first frame):
         /// every device's sample (in header order), its analog trigger and grip (empty spans: none), and this frame's events.
-        /// A time earlier than the previous frame's is recorded as the previous one (a clock that stepped back).
+        /// A time earlier than the previous frame's is recorded as the previous one (a clock that stepped back), and so is a
+        /// time that is not finite (the first frame's: 0).
         /// </summary>
         public void Record(double time, ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip, IReadOnlyList<DeviceEvent> events)
         {
             int n = _frame.Samples.Length;
             if (samples.Length != n) throw new ArgumentException($"Expected {n} samples, got {samples.Length}.", nameof(samples));
-            if (double.IsNaN(_start)) _start = time;
-            double t = time - _start;
-            _frame.Time = t > _frame.Time || FrameCount == 0 ? Math.Max(t, 0) : _frame.Time;
+            // A time that is not finite (a broken clock) is a frame in which no time passed, as the pipeline takes it: it
+            // neither starts the session's clock nor moves it (NaN compares false below).
+            bool finite = !double.IsNaN(time) && !double.IsInfinity(time);
+            if (finite && double.IsNaN(_start)) _start = time;
+            double t = finite ? time - _start : double.NaN;
+            _frame.Time = t > _frame.Time ? t : FrameCount == 0 ? 0 : _frame.Time;
             for (int d = 0; d < n; d++)
             {
                 DeviceSample s = samples[d];

@@ -71,6 +71,28 @@ namespace AvatarGo.Core.Tests
             Assert.That(events.Count, Is.EqualTo(1), "no chatter around 0.75");
         }
 
+        /// <summary>
+        /// Found in review: a time that is not a number or infinite (a custom source's broken clock) threw out of
+        /// SessionRecorder.Record (the recorder component then stopped the recording), and an infinite first time became the
+        /// session's start, so every later frame was recorded at time 0. The pipeline takes such a time as a frame in which no
+        /// time passed; so does the recorder now.
+        /// </summary>
+        [Test]
+        public void ARecordingTakesATimeThatIsNotFiniteAsOneInWhichNoTimePassed()
+        {
+            var header = new SessionHeader(90f, new[] { new DeviceInfo(3, DeviceClass.Hmd, "H") });
+            var text = new StringWriter();
+            double[] fed = { double.NaN, double.PositiveInfinity, 100.0, 100.0 + 1 / 90.0, double.NegativeInfinity, double.NaN, 100.0 + 2 / 90.0 };
+            using (var recorder = new SessionRecorder(new SessionWriter(text, header)))
+                foreach (double time in fed)
+                    recorder.Record(time, new[] { new DeviceSample(RigidPose.FromPosition(new Vector3(0, 1.6f, 0)), true) }, default, default, null);
+            using var reader = new SessionReader(new StringReader(text.ToString()), "recording");
+            SessionFrame f = reader.CreateFrame();
+            var times = new List<double>();
+            while (reader.ReadFrame(f)) times.Add(f.Time);
+            Assert.That(times, Is.EqualTo(new[] { 0, 0, 0, 1 / 90.0, 1 / 90.0, 1 / 90.0, 2 / 90.0 }).Within(1e-12));
+        }
+
         [Test]
         public void ARecordingReadsBackAsItWasFed()
         {
