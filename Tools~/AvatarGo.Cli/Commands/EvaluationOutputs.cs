@@ -48,7 +48,8 @@ internal sealed class EvaluationOutputs
           --positions OUT.csv  the solved and true world position of every humanoid joint per compared frame
                                (header: frame,time,Bone.solved.x,Bone.solved.y,Bone.solved.z,Bone.truth.x,...;
                                frame = the session frame's index, time in s, positions in metres, Unity's frame;
-                               the finger bones' columns too, which MPJPE leaves out)
+                               the finger bones' columns too, which MPJPE leaves out; a truth the frame does
+                               not give: empty cells)
           --bvh-out OUT.bvh    the solved avatar's motion (the scaled avatar, compared frames, centimetres)
           --plot OUT.png       per-frame errors over time: end effectors, knees and elbows (mm), and the knees'
                                and elbows' bend-plane angle error (deg)
@@ -88,14 +89,18 @@ internal sealed class EvaluationOutputs
         if (_bones == null)
         {
             _skeleton = scaled.Skeleton;
-            _bones = Enumerable.Range(0, HumanoidBones.Count).Select(b => (HumanoidBone)b).Where(b => scaled.Has(b) && frame.HasTruth[(int)b]).ToArray();
+            // The truth skeleton's bones, not the first compared frame's: a frame may lack some bones' truth.
+            HumanoidMap wearer = _reader.Header.TruthHumanoid;
+            _bones = Enumerable.Range(0, HumanoidBones.Count).Select(b => (HumanoidBone)b)
+                .Where(b => scaled.Has(b) && (wearer != null ? wearer.Has(b) : frame.HasTruth[(int)b])).ToArray();
         }
         var solved = new Vector3[_bones.Length];
         var truth = new Vector3[_bones.Length];
         for (int i = 0; i < _bones.Length; i++)
         {
             solved[i] = pipeline.Pose.World[scaled[_bones[i]]].Position;
-            truth[i] = frame.Truth[(int)_bones[i]].Position;
+            // Not given in this frame: NaN, written as empty cells (the frame buffer still holds an earlier frame's truth).
+            truth[i] = frame.HasTruth[(int)_bones[i]] ? frame.Truth[(int)_bones[i]].Position : new Vector3(float.NaN);
         }
         // The index of the frame just read; its time times the rate was not one where the clock does not start at 0 (a
         // recording's unscaled time) or the frames are not evenly spaced.
@@ -144,7 +149,10 @@ internal sealed class EvaluationOutputs
             line.Append(_frames[f].ToString(inv)).Append(',').Append(_times[f].ToString("R", inv));
             for (int i = 0; i < _bones.Length; i++)
                 foreach (Vector3 p in new[] { _solved[f][i], _truth[f][i] })
-                    line.Append(',').Append(p.X.ToString("R", inv)).Append(',').Append(p.Y.ToString("R", inv)).Append(',').Append(p.Z.ToString("R", inv));
+                {
+                    if (float.IsNaN(p.X)) line.Append(",,,"); // a truth the frame does not give
+                    else line.Append(',').Append(p.X.ToString("R", inv)).Append(',').Append(p.Y.ToString("R", inv)).Append(',').Append(p.Z.ToString("R", inv));
+                }
             w.WriteLine(line.ToString());
         }
     }

@@ -133,6 +133,76 @@ public class EvaluateOutputsTests
         }
     }
 
+    /// <summary>
+    /// Found in review: a session's frames may lack some bones' truth (session-format.md: "Bones may be absent in some
+    /// frames"), which the evaluator leaves out; --positions wrote the previous frame's truth for them instead (the frame
+    /// buffer keeps it), so the CSV's errors were not the evaluator's; and a bone without truth in the first compared frame
+    /// was left out of the CSV for good. Now a truth not given is an empty cell, and the columns are the truth skeleton's.
+    /// </summary>
+    [Test]
+    public void ThePositionsCsvLeavesTruthNotGivenEmpty()
+    {
+        string full = Temp(".agsession"), gappy = Temp(".agsession"), csv = Temp(".csv"), json = Temp(".json"), png = Temp(".png");
+        try
+        {
+            Assert.That(CliRunner.Run("simulate", "--bvh", Paths.Mocap("mixamo_fingers_30fps.bvh"), "--out", full, "--seed", "3").ExitCode, Is.EqualTo(0));
+            int frames;
+            using (var reader = SessionReader.Open(full))
+            {
+                frames = 0;
+                SessionWriter.WriteFile(gappy, reader.Header, writer =>
+                {
+                    SessionFrame frame = reader.CreateFrame();
+                    for (int i = 0; reader.ReadFrame(frame); i++, frames++)
+                    {
+                        if (i % 3 == 0) frame.HasTruth[(int)HumanoidBone.LeftHand] = false; // a third of the frames
+                        if (i < 400) frame.HasTruth[(int)HumanoidBone.RightFoot] = false; // the first frames, the calibration's (about 360) included
+                        writer.WriteFrame(frame);
+                    }
+                });
+            }
+            var r = CliRunner.Run("evaluate", gappy, "--positions", csv, "--json", json, "--plot", png);
+            Assert.That(r.ExitCode, Is.EqualTo(0), r.ToString());
+            using var doc = JsonDocument.Parse(File.ReadAllText(json));
+            double mpjpe = doc.RootElement.GetProperty("mpjpe_mm").GetDouble();
+
+            string[] lines = File.ReadAllLines(csv);
+            string[] header = lines[0].Split(',');
+            int leftHand = Array.IndexOf(header, "LeftHand.truth.x"), rightFoot = Array.IndexOf(header, "RightFoot.truth.x");
+            Assert.That(rightFoot, Is.GreaterThan(0), "a bone without truth in the first compared frame has its columns");
+            int emptyLeftHand = 0, emptyRightFoot = 0;
+            double sum = 0;
+            int count = 0;
+            for (int row = 1; row < lines.Length; row++)
+            {
+                string[] cells = lines[row].Split(',');
+                Assert.That(cells.Length, Is.EqualTo(header.Length));
+                int frame = int.Parse(cells[0], CultureInfo.InvariantCulture);
+                Assert.That(cells[leftHand] == "", Is.EqualTo(frame % 3 == 0), $"frame {frame}: LeftHand's truth is empty exactly where it is not given");
+                Assert.That(cells[rightFoot] == "", Is.EqualTo(frame < 400), $"frame {frame}: RightFoot's truth");
+                if (cells[leftHand] == "") emptyLeftHand++;
+                if (cells[rightFoot] == "") emptyRightFoot++;
+                for (int c = 2; c < header.Length; c += 6)
+                {
+                    var bone = Enum.Parse<HumanoidBone>(header[c].Split('.')[0]);
+                    if (HumanoidBones.IsFinger(bone) || cells[c + 3] == "") continue;
+                    double[] v = cells.Skip(c).Take(6).Select(x => double.Parse(x, CultureInfo.InvariantCulture)).ToArray();
+                    sum += Math.Sqrt(Sq(v[0] - v[3]) + Sq(v[1] - v[4]) + Sq(v[2] - v[5])) * 1000;
+                    count++;
+                }
+            }
+            Assert.That(emptyLeftHand, Is.GreaterThan(50), "a third of the compared frames");
+            Assert.That(emptyRightFoot, Is.GreaterThan(10), "compared frames before frame 400");
+            Assert.That(emptyRightFoot, Is.LessThan(lines.Length - 1), "and RightFoot's truth in the frames after");
+            Assert.That(sum / count, Is.EqualTo(mpjpe).Within(0.01), "MPJPE from the CSV vs the evaluator's (mm)");
+            Assert.That(new FileInfo(png).Length, Is.GreaterThan(20_000), "the plot is drawn with the gaps");
+        }
+        finally
+        {
+            foreach (string f in new[] { full, gappy, csv, json, png }) File.Delete(f);
+        }
+    }
+
     private static double Sq(double v) => v * v;
 
     private static double[][] Positions(string bvh)
