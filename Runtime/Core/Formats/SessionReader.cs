@@ -397,6 +397,12 @@ namespace AvatarGo.Core
                     if (end > _lineStart && _buffer[end - 1] == '\r') end--;
                     _lineLength = end - _lineStart;
                     _lineNumber++;
+                    // A UTF-8 byte-order mark a stream reader would have dropped (text handed over as a string keeps it).
+                    if (_lineNumber == 1 && _lineLength > 0 && _buffer[_lineStart] == '\uFEFF')
+                    {
+                        _lineStart++;
+                        _lineLength--;
+                    }
                     return true;
                 }
                 if (_endOfText) return false;

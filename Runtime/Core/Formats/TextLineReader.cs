@@ -6,7 +6,7 @@ namespace AvatarGo.Core
     /// <summary>
     /// Reads text one line at a time into one reused buffer (no string per line), counting lines, and refuses a line
     /// longer than a limit before holding more than that limit in memory. Lines end with LF, CRLF or a lone CR (as
-    /// <see cref="TextReader.ReadLine"/> has it).
+    /// <see cref="TextReader.ReadLine"/> has it). A byte-order mark at the start of the text is skipped.
     /// </summary>
     internal sealed class TextLineReader
     {
@@ -59,7 +59,7 @@ namespace AvatarGo.Core
                     _lineLength = terminator - _pos;
                     _pos = terminator + (_buffer[terminator] == '\r' && terminator + 1 < _end && _buffer[terminator + 1] == '\n' ? 2 : 1);
                     LineNumber++;
-                    CheckLength();
+                    TakeLine();
                     return true;
                 }
                 if (_endOfText)
@@ -69,7 +69,7 @@ namespace AvatarGo.Core
                     _lineLength = _end - _pos;
                     _pos = _end;
                     LineNumber++;
-                    CheckLength();
+                    TakeLine();
                     return true;
                 }
                 scanFrom = _end;
@@ -77,9 +77,16 @@ namespace AvatarGo.Core
             }
         }
 
-        private void CheckLength()
+        // The line just found: refused when too long; at the start of the text, without a byte-order mark.
+        private void TakeLine()
         {
             if (_lineLength > _maxLineLength) throw TooLong(LineNumber);
+            // A UTF-8 byte-order mark a stream reader would have dropped (text handed over as a string keeps it).
+            if (LineNumber == 1 && _lineLength > 0 && _buffer[_lineStart] == '\uFEFF')
+            {
+                _lineStart++;
+                _lineLength--;
+            }
         }
 
         private FormatException TooLong(int line) => new FormatException($"{_source}:{line}: a line longer than {_maxLineLength} characters (the reader's limit)");

@@ -234,6 +234,40 @@ namespace AvatarGo.Core.Tests
             Assert.That(n, Is.EqualTo(5));
         }
 
+        /// <summary>
+        /// Found in review: a file starting with a UTF-8 byte-order mark (Windows Notepad's UTF-8) read through
+        /// SessionReader.Open or BvhReader.ReadFile (a StreamReader drops the mark), but text handed over as a string (a
+        /// TextAsset's text, the Import menu's plan from a reader) was refused with "expected 'avatargo-session 1.0', found
+        /// 'avatargo-session'" (the mark invisible in the quote), and "expected HIERARCHY, found 'HIERARCHY'" for BVH. Now
+        /// a mark at the start of the text is skipped by both readers, as the stream does.
+        /// </summary>
+        [Test]
+        public void AByteOrderMarkReadsAsTheFileDoes()
+        {
+            string text = string.Join("\n", ValidLines()) + "\n";
+            using (var r = new SessionReader(new StringReader("\uFEFF" + text), "bom.agsession"))
+            {
+                SessionFrame f = r.CreateFrame();
+                int n = 0;
+                while (r.ReadFrame(f)) n++;
+                Assert.That(n, Is.EqualTo(5));
+            }
+            RecordingImportPlan plan = RecordingImport.Plan("bom.txt", new StringReader("\uFEFF" + text));
+            Assert.That(plan.IsValid, Is.True, plan.Error);
+            Assert.That(plan.Kind, Is.EqualTo(RecordingFileKind.Session));
+            // Only at the very start: elsewhere it is not white space and stays an error.
+            var l = ValidLines();
+            l[1] = "\uFEFF" + l[1];
+            AssertFailsAtLine(l, 2, "a mark inside the text");
+
+            string bvh = File.ReadAllText(TestData.Mocap("mocapbank_30fps.bvh"));
+            BvhClip plain = BvhReader.Read(new StringReader(bvh), "plain.bvh"), marked = BvhReader.Read(new StringReader("\uFEFF" + bvh), "bom.bvh");
+            Assert.That(marked.FrameCount, Is.EqualTo(plain.FrameCount));
+            Assert.That(marked.ChannelCount, Is.EqualTo(plain.ChannelCount));
+            Assert.That(marked.GetValue(marked.FrameCount - 1, marked.ChannelCount - 1), Is.EqualTo(plain.GetValue(plain.FrameCount - 1, plain.ChannelCount - 1)));
+            Assert.That(RecordingImport.Plan("bom.bvh.txt", new StringReader("\uFEFF" + bvh)).IsValid, Is.True);
+        }
+
         [Test]
         public void ARotationSlightlyOffUnitIsRenormalisedAndAZeroOneInALostSampleBecomesIdentity()
         {
