@@ -470,7 +470,14 @@ namespace AvatarGo.Core
             return v;
         }
 
-        private FormatException Error(int line, string problem) => new FormatException($"{_source}:{line}: {problem}");
+        private FormatException Error(int line, string problem)
+        {
+            // A problem in the text's last line when it lacks its line end: the text may have been cut inside it (a crash
+            // mid-write), which is more likely than the damage the problem names ("0.2" cut to "0": not a unit quaternion).
+            if (line == _lineNumber && !_lineEnded && !problem.EndsWith("(truncated?)", StringComparison.Ordinal))
+                problem += " (the file ends inside this line: truncated?)";
+            return new FormatException($"{_source}:{line}: {problem}");
+        }
 
         // Error messages quote file content; a long token is cut so that the message stays short.
         private static string Shorten(string s) => s.Length <= 60 ? s : s.Substring(0, 60) + "...";

@@ -359,6 +359,8 @@ namespace AvatarGo.Core.Tests
                 catch (FormatException e)
                 {
                     StringAssert.StartsWith("cut.agsession:", e.Message);
+                    // Said to be a cut, not damage (found in review: a quaternion's W "0.2" cut to "0" was "not a unit quaternion").
+                    StringAssert.EndsWith("truncated?)", e.Message, $"cut at character {cut}");
                 }
             }
             Assert.That(delivered, Is.GreaterThan(0), "the whole frames before a cut are delivered");
