@@ -67,8 +67,11 @@ namespace AvatarGo.Core
         /// <summary>How many recorded frames have been delivered since the start (loops included).</summary>
         public int FramesPlayed { get; private set; }
 
-        /// <summary>True once the last frame has been delivered and the playback does not loop.</summary>
-        public bool Finished => !_hasNext && !Loop;
+        /// <summary>
+        /// True once the last frame has been delivered and the playback does not loop; for a truncated or malformed session,
+        /// only once its error was thrown (by the <see cref="Step"/> or <see cref="Advance"/> after its last whole frame).
+        /// </summary>
+        public bool Finished => !_hasNext && !Loop && _lookAheadError == null;
 
         /// <summary>
         /// Moves the playback clock by <paramref name="deltaSeconds"/> (0 or more) and fills <paramref name="output"/> with the

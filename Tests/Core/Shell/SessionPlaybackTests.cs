@@ -135,6 +135,39 @@ namespace AvatarGo.Core.Tests
         }
 
         /// <summary>
+        /// Found in review: a truncated session read as Finished once its last whole frame was delivered, with its error
+        /// still pending; RecordedSessionTrackingSource steps only while not Finished, so in Stepped mode it held the last
+        /// frame for good and never reported the cut (RealTime reported it). Now a playback is not finished while an error
+        /// is still to be thrown: stepping on throws it, once.
+        /// </summary>
+        [Test]
+        public void ATruncatedSessionIsNotFinishedUntilItsErrorIsThrown()
+        {
+            string tiny = Tiny();
+            string truncated = tiny.Substring(0, tiny.IndexOf("frame 0.5", StringComparison.Ordinal));
+            using SessionPlayback playback = Play(truncated);
+            var output = new SessionFrame(playback.Header);
+            int stepped = 0;
+            // As the component steps: while there is something left to play.
+            var e = Assert.Throws<FormatException>(() =>
+            {
+                while (!playback.Finished)
+                    if (playback.Step(output)) stepped++;
+            });
+            Assert.That(stepped, Is.EqualTo(5), "every whole frame first");
+            Assert.That(e.Message, Does.Contain("truncated"));
+            Assert.That(playback.Finished, Is.True, "the error is thrown once; then the playback is over");
+            Assert.That(playback.Step(output), Is.False);
+            Assert.That(output.Time, Is.EqualTo(0.4).Within(1e-9), "the last whole frame is held");
+
+            using SessionPlayback whole = Play(tiny);
+            var frame = new SessionFrame(whole.Header);
+            int frames = 0;
+            while (!whole.Finished) if (whole.Step(frame)) frames++;
+            Assert.That(frames, Is.EqualTo(10), "a whole session finishes without an error");
+        }
+
+        /// <summary>
         /// Found in review: the clock ran on while the last frame was held, so looping switched on 100 s later played 991
         /// frames and 99 presses in one call; and one huge step (a hitch, a huge speed) reopened a looping session 100
         /// times in a call. Now the held clock waits on the last frame, and a step plays at most a second.
