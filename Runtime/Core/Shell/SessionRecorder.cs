@@ -29,6 +29,8 @@ namespace AvatarGo.Core
         /// every device's sample (in header order), its analog trigger and grip (empty spans: none), and this frame's events.
         /// A time earlier than the previous frame's is recorded as the previous one (a clock that stepped back), and so is a
         /// time that is not finite (the first frame's: 0).
+        /// A tracked sample the format cannot hold (not finite, a non-unit quaternion, beyond ±<see cref="SessionLimits.MaxPosition"/>)
+        /// is recorded as lost.
         /// </summary>
         public void Record(double time, ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip, IReadOnlyList<DeviceEvent> events)
         {
@@ -43,9 +45,10 @@ namespace AvatarGo.Core
             for (int d = 0; d < n; d++)
             {
                 DeviceSample s = samples[d];
-                // A tracked sample the writer would refuse (NaN, a non-unit quaternion) is recorded as lost, as the
-                // pipeline treats it.
-                _frame.Samples[d] = s.IsTracked && !s.IsUsable ? new DeviceSample(RigidPose.Identity, false) : s;
+                // A tracked sample the writer would refuse is recorded as lost: NaN or a non-unit quaternion, as the pipeline
+                // treats it; a position beyond the format's ±10 km (a driver glitch, which the pipeline's glitch filter
+                // drops), rather than the writer's refusal ending the recording.
+                _frame.Samples[d] = s.IsTracked && !IsRecordable(s.Pose) ? new DeviceSample(RigidPose.Identity, false) : s;
                 _frame.Trigger[d] = trigger.Length == n ? Clamp01OrNaN(trigger[d]) : float.NaN;
                 _frame.Grip[d] = grip.Length == n ? Clamp01OrNaN(grip[d]) : float.NaN;
             }
@@ -60,6 +63,10 @@ namespace AvatarGo.Core
 
         /// <summary>Completes the session and closes the writer.</summary>
         public void Dispose() => _writer.Dispose();
+
+        private static bool IsRecordable(RigidPose p) =>
+            p.IsValid && Math.Abs(p.Position.X) <= SessionLimits.MaxPosition && Math.Abs(p.Position.Y) <= SessionLimits.MaxPosition
+            && Math.Abs(p.Position.Z) <= SessionLimits.MaxPosition;
 
         private static float Clamp01OrNaN(float v) => float.IsNaN(v) ? float.NaN : v < 0f ? 0f : v > 1f ? 1f : v;
     }

@@ -93,6 +93,34 @@ namespace AvatarGo.Core.Tests
             Assert.That(times, Is.EqualTo(new[] { 0, 0, 0, 1 / 90.0, 1 / 90.0, 1 / 90.0, 2 / 90.0 }).Within(1e-12));
         }
 
+        /// <summary>
+        /// Found in review: a tracked pose beyond the format's ±10 km (a driver glitch: 3e38 m, finite, so usable to the
+        /// pipeline, whose glitch filter drops it) made SessionRecorder.Record throw, and AvatarGoRecorder then stopped the
+        /// whole recording at that frame. Such a sample is now recorded as lost, as a NaN one is, and the recording goes on.
+        /// </summary>
+        [Test]
+        public void ATrackedPoseBeyondTheFormatsRangeIsRecordedAsLost()
+        {
+            var header = new SessionHeader(90f, new[] { new DeviceInfo(3, DeviceClass.Hmd, "H"), new DeviceInfo(4, DeviceClass.Tracker, "T") });
+            var text = new StringWriter();
+            var near = new RigidPose(new Vector3(0.2f, 1f, 0.1f), Rotations.AngleAxis(20f, Vector3.UnitY));
+            using (var recorder = new SessionRecorder(new SessionWriter(text, header)))
+                for (int i = 0; i < 3; i++)
+                {
+                    var far = new RigidPose(new Vector3(i == 1 ? 3e38f : 2e4f, 1f, 0f), Quaternion.Identity);
+                    recorder.Record(i / 90.0, new[] { new DeviceSample(near, true), new DeviceSample(i == 2 ? near : far, true) }, default, default, null);
+                }
+            using var reader = new SessionReader(new StringReader(text.ToString()), "recording");
+            SessionFrame f = reader.CreateFrame();
+            var tracked = new List<bool>();
+            while (reader.ReadFrame(f))
+            {
+                Assert.That(f.Samples[0].Pose, Is.EqualTo(near), "the other device as fed");
+                tracked.Add(f.Samples[1].IsTracked);
+            }
+            Assert.That(tracked, Is.EqualTo(new[] { false, false, true }), "beyond 10 km: lost; the frame after as fed");
+        }
+
         [Test]
         public void ARecordingReadsBackAsItWasFed()
         {
