@@ -65,6 +65,7 @@ namespace AvatarGo.Simulation
             SessionFrame frame = reader.CreateFrame();
             var truthAtCalibration = new RigidPose[HumanoidBones.Count];
             var avatarAtCalibration = new RigidPose[HumanoidBones.Count];
+            var hasReference = new bool[HumanoidBones.Count]; // a bone's truth may be absent at calibration: its first frame with it
             bool calibrated = false;
             DisturbanceTracker disturbed = null;
             if (header.TruthHumanoid != null) report.TrueMeasurements = ProportionFitter.MeasureSkeleton(header.TruthHumanoid);
@@ -87,8 +88,10 @@ namespace AvatarGo.Simulation
                     report.AvatarMeasurements = ProportionFitter.MeasureSkeleton(scaled);
                     for (int b = 0; b < HumanoidBones.Count; b++)
                     {
+                        hasReference[b] = frame.HasTruth[b] && scaled.Has((HumanoidBone)b);
+                        if (!hasReference[b]) continue;
                         truthAtCalibration[b] = frame.Truth[b];
-                        if (scaled.Has((HumanoidBone)b)) avatarAtCalibration[b] = pipeline.Pose.World[scaled[(HumanoidBone)b]];
+                        avatarAtCalibration[b] = pipeline.Pose.World[scaled[(HumanoidBone)b]];
                     }
                     if (pipeline.Hand(BodySide.Left).HasFingerIk || pipeline.Hand(BodySide.Right).HasFingerIk) report.Fingers = new FingerReport();
                     if (exerciseSeconds > 0f)
@@ -141,6 +144,13 @@ namespace AvatarGo.Simulation
                     if (HumanoidBones.IsEndEffector(bone))
                     {
                         report.EndEffectorMm.Add(mm);
+                        if (!hasReference[b])
+                        {
+                            // No truth at calibration: the turns are measured from this frame on.
+                            hasReference[b] = true;
+                            truthAtCalibration[b] = t;
+                            avatarAtCalibration[b] = a;
+                        }
                         Quaternion avatarTurn = a.Rotation * Quaternion.Conjugate(avatarAtCalibration[b].Rotation);
                         Quaternion truthTurn = t.Rotation * Quaternion.Conjugate(truthAtCalibration[b].Rotation);
                         report.EndEffectorDegrees.Add(Rotations.AngleDegrees(avatarTurn, truthTurn));
