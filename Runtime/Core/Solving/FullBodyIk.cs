@@ -13,9 +13,10 @@ namespace AvatarGo.Core
     /// Spine: the bend <see cref="BodyTargets.SpineBend"/> (the paper's angle α between w0 and wt, with its axis) is
     /// shared equally by the spine joints (Spine, Chest, UpperChest, Neck as present): starting from the reference
     /// pose each frame, every joint turns by α/n about the bend's axis, which curves the back instead of folding it at
-    /// one joint. Where the head is nearer the first spine joint than that curve puts it, every joint also flexes by
-    /// the same φ about the hip line (left to right hip joint; forward where the back is straight), φ chosen by damped
-    /// Gauss–Newton so that the chord matches the target's distance with a stiffness (<see cref="ChordNoiseMetres"/>):
+    /// one joint. Where the head is nearer the first spine joint than that curve puts it, every joint above the first
+    /// also flexes by the same φ about the hip line (left to right hip joint; forward where the back is straight), φ
+    /// chosen by damped least squares (one-variable Levenberg–Marquardt) so that the chord matches the target's distance
+    /// with a stiffness (<see cref="ChordNoiseMetres"/>):
     /// near a straight back the chord changes with the square of φ, so the devices' noise alone would flex the back
     /// back and forth by centimetres; a stiff back leaves the head up to that noise short instead. One swing at the
     /// first spine joint then aims the head at its target.
