@@ -14,6 +14,7 @@ namespace AvatarGo.Core
         private readonly float _minCutoff, _beta, _derivativeCutoff;
         private readonly bool[] _has;
         private readonly RigidPose[] _value;
+        private readonly RigidPose[] _raw;          // the last sample as it came: the speeds are measured from it
         private readonly float[] _speed, _angularSpeed;
         private readonly double[] _time;
 
@@ -32,6 +33,7 @@ namespace AvatarGo.Core
             _derivativeCutoff = derivativeCutoff;
             _has = new bool[devices];
             _value = new RigidPose[devices];
+            _raw = new RigidPose[devices];
             _speed = new float[devices];
             _angularSpeed = new float[devices];
             _time = new double[devices];
@@ -52,13 +54,14 @@ namespace AvatarGo.Core
                     // No time passed (a repeated frame) or the clock went back (a replay restarted): the filtered pose stays
                     // as it is, and the clock restarts from here. Seeded again from the raw sample, it jumped by the whole lag.
                     _time[d] = time;
+                    _raw[d] = x;
                     samples[d] = new DeviceSample(_value[d], true);
                     continue;
                 }
                 if (!_has[d])
                 {
                     _has[d] = true;
-                    _value[d] = x;
+                    _value[d] = _raw[d] = x;
                     _speed[d] = _angularSpeed[d] = 0f;
                     _time[d] = time;
                     continue;
@@ -66,8 +69,11 @@ namespace AvatarGo.Core
                 float dt = (float)Math.Min(time - _time[d], 0.25);
                 _time[d] = time;
                 RigidPose previous = _value[d];
-                float speed = Vector3.Distance(x.Position, previous.Position) / dt;
-                float angularSpeed = Rotations.AngleDegrees(previous.Rotation, x.Rotation) * Rotations.Deg2Rad / dt;
+                // The device's speed from its own samples: measured from the filtered pose, it included the filter's lag over
+                // one frame, v (1 + tau / dt), so the cutoff, and the lag, changed with the frame rate.
+                float speed = Vector3.Distance(x.Position, _raw[d].Position) / dt;
+                float angularSpeed = Rotations.AngleDegrees(_raw[d].Rotation, x.Rotation) * Rotations.Deg2Rad / dt;
+                _raw[d] = x;
                 _speed[d] += Alpha(_derivativeCutoff, dt) * (speed - _speed[d]);
                 _angularSpeed[d] += Alpha(_derivativeCutoff, dt) * (angularSpeed - _angularSpeed[d]);
                 Vector3 p = Vector3.Lerp(previous.Position, x.Position, Alpha(_minCutoff + _beta * _speed[d], dt));
