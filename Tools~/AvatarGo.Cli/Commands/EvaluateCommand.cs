@@ -17,7 +17,7 @@ public sealed class EvaluateCommand : ICommand
         avatargo evaluate SESSION [--mode exact|fixed] [--scale-mode uniform|fitted] [--avatar FILE [--avatar-map FILE]] [--leg-scale S] [--arm-scale S]
                          [--controller NAME|none] [--grip hold|open|point|input] [--hands palm|calibrated] [--json OUT]
                          [--knee-hint MODEL] [--elbow-hint MODEL] [--positions OUT.csv] [--bvh-out OUT.bvh] [--plot OUT.png]
-                         [--refine] [--exercise-seconds S]
+                         [--refine] [--exercise-seconds S] [--smoothing]
 
         Replays SESSION through the whole pipeline (SelfAvatarPipeline: T-pose identification, scaling,
         walk-in offsets, body IK, hands on the controllers, finger IK) and compares the avatar (the
@@ -54,6 +54,8 @@ public sealed class EvaluateCommand : ICommand
           --knee-hint MODEL    how the knees' bend direction is chosen: pelvis-foot (default), pelvis, foot, toes,
                                ankle-hinge, calibration (Documentation~/solver.md compares them)
           --elbow-hint MODEL   how the elbows' bend direction is chosen: hand-axis (default), down-out-back, calibration
+          --smoothing          filter every device pose (TrackingSettings.Smoothing: One Euro, 2 Hz at rest, beta 30;
+                               off by default; Documentation~/solver.md, "Jitter")
           --refine             the refinement from motion (Documentation~/calibration.md): the S seconds after
                                calibration are the exercise ('simulate --exercise-seconds S'), recorded and not
                                scored; at their end the arms' lengths are refined from their reach and the rest of
@@ -171,6 +173,7 @@ public sealed class EvaluateCommand : ICommand
             string other => throw new UsageException($"--hands must be palm or calibrated, got '{other}'"),
         };
         SetHintModels(a, settings);
+        settings.Tracking.Smoothing = a.Flag("smoothing");
         foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
         {
             settings.Hand(side).Controller = controller;
