@@ -146,7 +146,7 @@ namespace AvatarGo.Core
             Vector3 hipLine = Vectors.NormalizeOr(refWorld[_rightLeg.Root].Position - refWorld[_leftLeg.Root].Position, Vector3.UnitX);
             _hipLineInHips = Vector3.Normalize(Vector3.Transform(hipLine, Quaternion.Conjugate(refWorld[_hips].Rotation)));
             _chordCurvature = ChordCurvature(refWorld, hipLine);
-            _flexStiffnessSquared = 2f * DefaultChordNoiseMetres * _chordCurvature;
+            ChordNoiseMetres = DefaultChordNoiseMetres; // and the stiffness with it
             _leftShoulder = new Shoulder(s, map[HumanoidBone.LeftShoulder], _leftArm.Root, _neck, refLocal, refWorld);
             _rightShoulder = new Shoulder(s, map[HumanoidBone.RightShoulder], _rightArm.Root, _neck, refLocal, refWorld);
             _aboveHips = AncestorsOrSelf(s, -1, s.GetParent(_hips));
@@ -249,8 +249,8 @@ namespace AvatarGo.Core
         }
 
         // The spine: every spine joint takes the same share α/n of the bend about its axis and the same flexion φ about the
-        // hip line, on top of its reference rotation (a smooth curve rather than a fold at one joint); φ by damped
-        // Gauss–Newton on (chord − wanted)² + λ²φ² (the chord: the first spine joint to the end joint); then one swing at
+        // hip line, on top of its reference rotation (a smooth curve rather than a fold at one joint); φ by one-variable
+        // Levenberg–Marquardt on (chord − wanted)² + λ²φ² (the chord: the first spine joint to the end joint); then one swing at
         // the first spine joint aims the end joint at its target.
         private void SolveSpine(SkeletonPose pose, Quaternion spineBend, RigidPose head, bool toNeck, Vector3 neckTarget)
         {
@@ -282,10 +282,9 @@ namespace AvatarGo.Core
             // Levenberg–Marquardt on one variable: a step that does not lower the cost is taken again with more damping
             // (a target beyond a straight back's reach, where the slope is 0, with no stiffness would otherwise send φ as
             // far as a step goes).
-            float phi = toNeck ? _spineFlex : FirstFlex, posedPhi = phi;
+            float phi = toNeck ? _spineFlex : FirstFlex;
             float chord = BendSpine(pose, share, flexAxis, phi, count, end);
-            float slope = ChordSlope(pose, share, flexAxis, phi, count, end, chord);
-            posedPhi = phi + SlopeStepRadians;
+            float slope = ChordSlope(pose, share, flexAxis, phi, count, end, chord), posedPhi = phi + SlopeStepRadians;
             float cost = FlexCost(chord - wanted, phi), extraDamping = 0f;
             for (int i = 0; i < SpineIterations; i++)
             {
