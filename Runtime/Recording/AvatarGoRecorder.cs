@@ -113,6 +113,8 @@ namespace AvatarGo
             FramesRecorded = 0;
             LastRecordingPath = path;
             Debug.Log($"{nameof(AvatarGoRecorder)}: recording {header.Devices.Count} devices to {path}", this);
+            if (!ReferenceEquals(_recording.Header, header))
+                Debug.LogWarning($"{nameof(AvatarGoRecorder)}: a device serial holds white space (or is \"-\"), which the session format cannot; it is recorded with '_' in its place.", this);
             return true;
         }
 

@@ -61,6 +61,19 @@ namespace AvatarGo.Core
             return false;
         }
 
+        /// <summary>
+        /// A serial as the format can write it: each white-space character as '_', and "-" (the format's "no serial") as
+        /// "_". Any other serial, the empty one included, is returned as it is.
+        /// </summary>
+        public static string WritableSerial(string serial)
+        {
+            if (serial == "-") return "_";
+            if (string.IsNullOrEmpty(serial) || IsToken(serial)) return serial;
+            char[] c = serial.ToCharArray();
+            for (int i = 0; i < c.Length; i++) if (char.IsWhiteSpace(c[i])) c[i] = '_';
+            return new string(c);
+        }
+
         /// <summary>True when <paramref name="s"/> can stand as one token (non-empty, no white space).</summary>
         public static bool IsToken(string s)
         {

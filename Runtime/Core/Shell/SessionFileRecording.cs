@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 using System.Text;
 
@@ -12,6 +13,9 @@ namespace AvatarGo.Core
     /// holds every frame written up to the last flush (at most the writer's buffers, about 68 KiB or a second of a
     /// 90 Hz six-device session, are lost), without its end line:
     /// <see cref="SessionReader"/> reads those frames and then reports the file as truncated.
+    /// A device serial the format cannot hold (white space in it, or "-", the format's "no serial": a runtime's serial is
+    /// whatever its driver reports) is recorded with '_' in its place (<see cref="Header"/> is the header as recorded), so
+    /// that no device's serial stops a recording; ids, classes and roles are recorded as they are.
     /// </summary>
     public sealed class SessionFileRecording : IDisposable
     {
@@ -25,12 +29,12 @@ namespace AvatarGo.Core
 
         /// <summary>Starts recording the devices of <paramref name="header"/> to <paramref name="path"/> (its folder is created).</summary>
         /// <exception cref="IOException">The partial file cannot be created.</exception>
-        /// <exception cref="ArgumentException">A device's serial cannot be written (white space in it).</exception>
+        /// <exception cref="ArgumentException">The header holds ground truth the format cannot (a joint name with white space in it).</exception>
         public SessionFileRecording(string path, SessionHeader header)
         {
             if (path == null) throw new ArgumentNullException(nameof(path));
             if (header == null) throw new ArgumentNullException(nameof(header));
-            Header = header;
+            Header = WithWritableSerials(header);
             Path = System.IO.Path.GetFullPath(path);
             PartialPath = Path + PartialSuffix;
             Directory.CreateDirectory(System.IO.Path.GetDirectoryName(Path));
@@ -38,7 +42,7 @@ namespace AvatarGo.Core
             try
             {
                 _text = new StreamWriter(_stream, new UTF8Encoding(false), BufferSize);
-                _recorder = new SessionRecorder(new SessionWriter(_text, header));
+                _recorder = new SessionRecorder(new SessionWriter(_text, Header));
             }
             catch
             {
@@ -48,8 +52,38 @@ namespace AvatarGo.Core
             }
         }
 
-        /// <summary>The devices recorded (every frame must be made for them).</summary>
+        /// <summary>
+        /// The devices recorded (every frame must be made for them): the header given, or, when a serial had to be
+        /// rewritten for the format, a copy with the serials as recorded.
+        /// </summary>
         public SessionHeader Header { get; }
+
+        // The header itself when the format can write every serial; otherwise a copy with the serials it can.
+        private static SessionHeader WithWritableSerials(SessionHeader header)
+        {
+            IReadOnlyList<DeviceInfo> devices = header.Devices;
+            DeviceInfo[] written = null;
+            for (int i = 0; i < devices.Count; i++)
+            {
+                DeviceInfo d = devices[i];
+                string serial = SessionText.WritableSerial(d.Serial);
+                if (serial == d.Serial) continue;
+                if (written == null)
+                {
+                    written = new DeviceInfo[devices.Count];
+                    for (int k = 0; k < devices.Count; k++) written[k] = devices[k];
+                }
+                written[i] = new DeviceInfo(d.Id, d.Class, serial, d.RuntimeRole);
+            }
+            if (written == null) return header;
+            DeviceRole[] trueRoles = null;
+            if (header.HasTrueRoles)
+            {
+                trueRoles = new DeviceRole[devices.Count];
+                for (int i = 0; i < trueRoles.Length; i++) trueRoles[i] = header.TrueRole(i);
+            }
+            return new SessionHeader(header.Rate, written, trueRoles, header.TruthHumanoid);
+        }
 
         /// <summary>The file the recording becomes when completed.</summary>
         public string Path { get; }

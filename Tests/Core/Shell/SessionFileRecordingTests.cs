@@ -151,13 +151,54 @@ namespace AvatarGo.Core.Tests
             Assert.Throws<InvalidOperationException>(() => recording.Record(frame));
         }
 
+        /// <summary>
+        /// A serial the format cannot hold (white space in it, or "-", the format's "no serial") does not stop a recording
+        /// (before: the recording was refused, and AvatarGoRecorder logged an error and recorded nothing, for a serial the
+        /// user cannot change): it is recorded with '_' in place of each white-space character, "-" as "_", and the
+        /// recording's header says so; every other device, and every id, class and role, is recorded as it was.
+        /// </summary>
         [Test]
-        public void ASerialTheFormatCannotHoldIsRefusedWithoutLeavingAFile()
+        public void ASerialTheFormatCannotHoldIsRecordedWithUnderscores()
         {
-            string path = Path.Combine(_dir, "bad.agsession");
-            var header = new SessionHeader(90f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "has space") });
-            Assert.Throws<ArgumentException>(() => new SessionFileRecording(path, header));
-            Assert.That(Directory.GetFiles(_dir), Is.Empty);
+            string path = Path.Combine(_dir, "serials.agsession");
+            var header = new SessionHeader(90f, new[]
+            {
+                new DeviceInfo(0, DeviceClass.Hmd, "has space"),
+                new DeviceInfo(3, DeviceClass.Controller, "tab\tand\nnewline", DeviceRole.LeftHand),
+                new DeviceInfo(5, DeviceClass.Tracker, "-", DeviceRole.Pelvis),
+                new DeviceInfo(7, DeviceClass.Tracker, "LHR-1A2B3C4D"),
+                new DeviceInfo(8, DeviceClass.Tracker, ""),
+            });
+            var recording = new SessionFileRecording(path, header);
+            Assert.That(recording.Header, Is.Not.SameAs(header), "a copy with the serials as recorded");
+            var frame = new SessionFrame(recording.Header);
+            for (int d = 0; d < frame.Samples.Length; d++) frame.Samples[d] = new DeviceSample(new RigidPose(new Vector3(d, 1f, 0f), Quaternion.Identity), true);
+            recording.Record(frame);
+            recording.Complete();
+            using SessionReader copy = SessionReader.Open(path);
+            string[] serials = { "has_space", "tab_and_newline", "_", "LHR-1A2B3C4D", "" };
+            Assert.That(copy.Header.Devices.Count, Is.EqualTo(header.Devices.Count));
+            for (int d = 0; d < serials.Length; d++)
+            {
+                DeviceInfo read = copy.Header.Devices[d], given = header.Devices[d];
+                Assert.That(read.Serial, Is.EqualTo(serials[d]), $"device {given.Id}");
+                Assert.That(recording.Header.Devices[d].Serial, Is.EqualTo(serials[d]), $"device {given.Id} in the recording's header");
+                Assert.That(read.Id, Is.EqualTo(given.Id));
+                Assert.That(read.Class, Is.EqualTo(given.Class));
+                Assert.That(read.RuntimeRole, Is.EqualTo(given.RuntimeRole));
+            }
+            SessionFrame back = copy.CreateFrame();
+            Assert.That(copy.ReadFrame(back), Is.True);
+            Assert.That(back.Samples[4].Pose.Position, Is.EqualTo(new Vector3(4f, 1f, 0f)));
+        }
+
+        [Test]
+        public void AHeaderWhoseSerialsTheFormatHoldsIsRecordedAsItIs()
+        {
+            var header = new SessionHeader(90f, new[] { new DeviceInfo(0, DeviceClass.Hmd, "LHR-00AA"), new DeviceInfo(1, DeviceClass.Tracker, "") });
+            var recording = new SessionFileRecording(Path.Combine(_dir, "plain.agsession"), header);
+            Assert.That(recording.Header, Is.SameAs(header));
+            recording.Abandon();
         }
     }
 }
