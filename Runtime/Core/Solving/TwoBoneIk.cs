@@ -14,10 +14,10 @@ namespace AvatarGo.Core
     /// (to within <see cref="StretchMargin"/>, so the bend plane survives to the next frame), and one closer than
     /// the limb can fold leaves it folded as far as it goes (interior angle of the middle joint
     /// <see cref="MinFoldDistance"/> short of the bones' length difference) toward it; both are reported as not
-    /// reached with the distance left. A hint on the root→goal line (or not finite) gives no plane: the limb keeps
-    /// its current bend plane. A goal whose rotation is not a unit quaternion still positions the limb and leaves
-    /// the end joint's local rotation alone. A goal whose position is not finite leaves the limb untouched and is
-    /// reported as not reached, infinitely far. Nothing here ever writes NaN.
+    /// reached with the distance left. A hint on the root→goal line (or not finite, or so far off that its offset from
+    /// that line overflows) gives no plane: the limb keeps its current bend plane. A goal whose rotation is not a unit
+    /// quaternion still positions the limb and leaves the end joint's local rotation alone. A goal whose position is not
+    /// finite leaves the limb untouched and is reported as not reached, infinitely far. Nothing here ever writes NaN.
     /// </remarks>
     public static class TwoBoneIk
     {
@@ -93,7 +93,8 @@ namespace AvatarGo.Core
                 if (pb.LengthSquared() > 1e-12f && ph.LengthSquared() > 1e-10f)
                 {
                     float twistAngle = MathF.Atan2(Vector3.Dot(u, Vector3.Cross(pb, ph)), Vector3.Dot(pb, ph));
-                    turn = Quaternion.CreateFromAxisAngle(u, twistAngle) * swing;
+                    // A finite hint so far off that its offset overflowed gives no angle, so no plane (it gave a NaN root).
+                    if (Vectors.IsFinite(twistAngle)) turn = Quaternion.CreateFromAxisAngle(u, twistAngle) * swing;
                 }
             }
             RotateJoint(pose, chain, 0, Quaternion.Normalize(turn));

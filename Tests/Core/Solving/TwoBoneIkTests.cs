@@ -254,6 +254,34 @@ namespace AvatarGo.Core.Tests
                     }
         }
 
+        /// <summary>
+        /// A finite hint very far off (found in review: at ±3e38 m its offset from the root-goal axis overflowed to infinity,
+        /// whose square still passed the "off the axis" test) wrote a NaN rotation to the root. It now gives no NaN, and the
+        /// goal is reached.
+        /// </summary>
+        [Test]
+        public void AFarHintGivesNoNaN()
+        {
+            var rng = new Random(17);
+            Skeleton s = MakeLeg(rng);
+            var pose = new SkeletonPose(s);
+            var chain = new LimbChain(s, Root, Middle, End);
+            float big = float.MaxValue;
+            var hints = new[] { new Vector3(-3e38f, 3e38f, -1f), new Vector3(big, big, big), new Vector3(0f, -big, big), new Vector3(1e20f, -1e25f, 3e30f) };
+            for (int i = 0; i < 40; i++)
+            {
+                Randomize(pose, rng);
+                Vector3 a = pose.World[Root].Position;
+                var goal = new RigidPose(a + RandomDirection(rng) * 0.45f, RandomRotation(rng));
+                Vector3 hint = hints[i % hints.Length];
+                LimbResult r = TwoBoneIk.Solve(pose, chain, goal, hint);
+                pose.UpdateWorld();
+                AssertFinite(pose);
+                AssertLengthsKept(pose, s);
+                Assert.That(r.Reached, Is.True, $"case {i}, hint {hint}");
+            }
+        }
+
         [Test]
         public void ZeroLengthBoneGivesNoNaN()
         {
