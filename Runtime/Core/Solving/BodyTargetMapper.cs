@@ -25,9 +25,11 @@ namespace AvatarGo.Core
     {
         /// <summary>
         /// The weight of the fallback direction in the elbow hint (and the toes' knee hint), against the hand's (toes')
-        /// weight, which is the size of its component off the limb's axis (1 when square to it). 0.26 = sin 15°, the typical
-        /// angle between the forearm and the hand (wrist flexion and deviation in everyday tasks): the hand decides wherever
-        /// it points farther than that off the arm's axis, the fallback where it points along it and says nothing.
+        /// weight, which is the size of its component off the limb's axis (1 when square to it); within 15° of the limb's
+        /// axis the fallback fades with its own component off the axis, so that it does not turn round where the limb passes
+        /// through it. 0.26 = sin 15°, the typical angle between the forearm and the hand (wrist flexion and deviation in
+        /// everyday tasks): the hand decides wherever it points farther than that off the arm's axis, the fallback where it
+        /// points along it and says nothing.
         /// </summary>
         public const float FallbackWeight = 0.26f;
 
@@ -188,7 +190,7 @@ namespace AvatarGo.Core
                 case KneeHintModel.Pelvis: direction = pelvis; break;
                 case KneeHintModel.Foot: direction = foot; break;
                 case KneeHintModel.Toes:
-                    direction = Vectors.ProjectOnPlane(target.Goal.TransformDirection(_toesInFoot[s]), axis) + FallbackWeight * Vectors.NormalizeOr(pelvis, Vector3.Zero);
+                    direction = Vectors.ProjectOnPlane(target.Goal.TransformDirection(_toesInFoot[s]), axis) + FallbackWeight * Faded(pelvis);
                     break;
                 case KneeHintModel.AnkleHinge: direction = AnkleHinge(hip, target.Goal, axis, pelvis, s); break;
                 default: direction = pelvis + foot; break;
@@ -234,6 +236,12 @@ namespace AvatarGo.Core
             return Vectors.NormalizeOr(hinge * w + e1 * (1f - w), e1);
         }
 
+        // A fallback direction's part square to a limb's axis (as long as the sine of its angle to the axis), normalised
+        // except within 15° of the axis (sin 15° = FallbackWeight, the angle within which a hand counts as along it), where
+        // it fades to nothing: normalised there too, it turns round in the one frame the limb passes through it, and a hand
+        // or toes that weigh no more turn the limb with it (a 30° bent elbow by up to 123° and 11 cm in a frame).
+        private static Vector3 Faded(Vector3 squareToAxis) => squareToAxis / Math.Max(squareToAxis.Length(), FallbackWeight);
+
         // The elbow's hint: the wrist plus one arm length along the chosen bend direction.
         private void Arm(ReadOnlySpan<DeviceSample> samples, BodySide side, Quaternion torso, ref LimbTarget target)
         {
@@ -252,7 +260,7 @@ namespace AvatarGo.Core
             Vector3 outward = Vector3.Transform(_right0, torso) * (side == BodySide.Left ? -1f : 1f);
             Vector3 back = Vector3.Cross(outward, up) * (side == BodySide.Left ? 1f : -1f);
             // With the hands held forward (controllers), the upper arm hangs and the elbow falls down, out and back.
-            Vector3 downOutBack = Vectors.NormalizeOr(Vectors.ProjectOnPlane(outward - up + back, axis), Vector3.Zero);
+            Vector3 downOutBack = Faded(Vectors.ProjectOnPlane(Vectors.NormalizeOr(outward - up + back, Vector3.Zero), axis));
             Vector3 direction = _elbowModel == ElbowHintModel.DownOutBack
                 ? downOutBack
                 : Vectors.ProjectOnPlane(-target.Goal.TransformDirection(_handInHand[s]), axis) + FallbackWeight * downOutBack;

@@ -10,7 +10,8 @@ namespace AvatarGo.Core
         /// The default: the forearm continues the hand (the elbow lies back along the hand's direction, wrist to knuckles, off
         /// the shoulder-to-wrist axis), so the hand's roll about its own axis (forearm twist) never moves the elbow; where the
         /// hand points along the arm's axis and says little, the elbow falls down, out and back from the torso (the hand's
-        /// direction weighted by its part off the arm's axis, this one by <see cref="BodyTargetMapper.FallbackWeight"/>).
+        /// direction weighted by its part off the arm's axis, this one by <see cref="BodyTargetMapper.FallbackWeight"/>, fading
+        /// where the arm itself points within 15° of down, out and back).
         /// </summary>
         HandAxis = 0,
 

@@ -22,7 +22,8 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// Toward the toes: the foot's current toe direction off the leg's axis, with the pelvis's flexion plane (weight
-        /// <see cref="BodyTargetMapper.FallbackWeight"/>) where the toes point along the leg.
+        /// <see cref="BodyTargetMapper.FallbackWeight"/>, fading where the leg lies within 15° of the hip line) where the toes
+        /// point along the leg.
         /// </summary>
         Toes = 3,
 
