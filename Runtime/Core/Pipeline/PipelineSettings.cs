@@ -58,6 +58,21 @@ namespace AvatarGo.Core
                 : throw new ArgumentOutOfRangeException(nameof(value), value, "The spine's chord noise must be 0 or more metres.");
         }
 
+        private float _straightLegCutoffHz = FullBodyIk.DefaultStraightLegCutoffHz;
+
+        /// <summary>
+        /// The cutoff (Hz, <see cref="FullBodyIk.DefaultStraightLegCutoffHz"/>; 0 turns it off) of the filter that steadies a
+        /// leg held straight against the devices' noise; <see cref="FullBodyIk.StraightLegCutoffHz"/>. Read when calibration
+        /// completes.
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
+        public float StraightLegCutoffHz
+        {
+            get => _straightLegCutoffHz;
+            set => _straightLegCutoffHz = value >= 0f && !float.IsInfinity(value) ? value
+                : throw new ArgumentOutOfRangeException(nameof(value), value, "The straight leg's cutoff must be 0 or more Hz.");
+        }
+
         /// <summary>The left hand's controller and grip.</summary>
         public HandSettings LeftHand { get; } = new HandSettings();
 

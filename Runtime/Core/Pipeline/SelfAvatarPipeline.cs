@@ -342,6 +342,7 @@ namespace AvatarGo.Core
             }
             _ik.ShrugReleaseSeconds = Settings.ShrugReleaseSeconds;
             _ik.ChordNoiseMetres = Settings.SpineChordNoiseMetres;
+            _ik.StraightLegCutoffHz = Settings.StraightLegCutoffHz;
             TrackingSettings tracking = Settings.Tracking;
             _smoothing = tracking.Smoothing ? new OneEuroFilter(_devices.Length, tracking.SmoothingMinCutoff, tracking.SmoothingBeta) : null;
             _accepted = new DeviceSample[_devices.Length];

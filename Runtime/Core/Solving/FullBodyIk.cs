@@ -97,6 +97,36 @@ namespace AvatarGo.Core
             }
         }
 
+        private readonly LegReachFilter _leftLegReach = new LegReachFilter(), _rightLegReach = new LegReachFilter();
+        private readonly float _leftLegLength, _rightLegLength;   // thigh + shin: each leg's full reach
+        private float _straightLegCutoffHz = DefaultStraightLegCutoffHz;
+
+        /// <summary>The default <see cref="StraightLegCutoffHz"/>: 1 Hz.</summary>
+        public const float DefaultStraightLegCutoffHz = 1f;
+
+        /// <summary>
+        /// The cutoff (Hz, for a still leg; <see cref="DefaultStraightLegCutoffHz"/>) of the filter that steadies a leg held
+        /// straight: near full reach the knee's distance from the hip-to-ankle line grows with the square root of the slack,
+        /// so the devices' noise in that distance alone moved a straight knee by centimetres a frame. Within 2.5 % of its
+        /// reach of full reach a leg bends for the hip-to-ankle distance through a One Euro filter (its cutoff rising with the
+        /// distance's speed), with a soft reach 2 mm either side of full reach (a straight leg bent by 4°, its foot at most
+        /// 0.5 mm short), the foot then that filter's lag (a millimetre or so) from its target. Only the frame-by-frame
+        /// <see cref="Solve(in BodyTargets, SkeletonPose, float)"/> filters; 0 turns the filter off. See
+        /// Documentation~/solver.md ("A straight limb shivers").
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
+        public float StraightLegCutoffHz
+        {
+            get => _straightLegCutoffHz;
+            set
+            {
+                if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The straight leg's cutoff must be 0 or more Hz.");
+                _straightLegCutoffHz = value;
+                _leftLegReach.Reset();
+                _rightLegReach.Reset();
+            }
+        }
+
         /// <summary>
         /// How far the neck follows the head's orientation (0: the neck lies where the evenly bent spine puts it;
         /// 1: the neck bone turns with the head): a nodding or tilted head carries the neck part of the way, as the
@@ -141,6 +171,8 @@ namespace AvatarGo.Core
             }
             _leftLeg = new LimbChain(s, map[HumanoidBone.LeftUpperLeg], map[HumanoidBone.LeftLowerLeg], map[HumanoidBone.LeftFoot]);
             _rightLeg = new LimbChain(s, map[HumanoidBone.RightUpperLeg], map[HumanoidBone.RightLowerLeg], map[HumanoidBone.RightFoot]);
+            _leftLegLength = Reach(refWorld, _leftLeg);
+            _rightLegLength = Reach(refWorld, _rightLeg);
             _leftArm = new LimbChain(s, map[HumanoidBone.LeftUpperArm], map[HumanoidBone.LeftLowerArm], map[HumanoidBone.LeftHand]);
             _rightArm = new LimbChain(s, map[HumanoidBone.RightUpperArm], map[HumanoidBone.RightLowerArm], map[HumanoidBone.RightHand]);
             Vector3 hipLine = Vectors.NormalizeOr(refWorld[_rightLeg.Root].Position - refWorld[_leftLeg.Root].Position, Vector3.UnitX);
@@ -191,7 +223,7 @@ namespace AvatarGo.Core
         /// world transforms are recomputed where they are read, never taken from earlier), as a single frame: no shrug is
         /// held from earlier frames or kept for later ones. On return <see cref="SkeletonPose.World"/> is up to date.
         /// </summary>
-        public IkReport Solve(in BodyTargets targets, SkeletonPose pose) => Solve(in targets, pose, 0f, false);
+        public IkReport Solve(in BodyTargets targets, SkeletonPose pose) => Solve(in targets, pose, 0f, false, false);
 
         /// <summary>
         /// Poses <paramref name="pose"/> as the frame <paramref name="deltaSeconds"/> after the previous one: the clavicles
@@ -199,9 +231,9 @@ namespace AvatarGo.Core
         /// and keep the one this frame needs. 0 (or a time that is not finite and positive: a repeated or paused frame)
         /// releases nothing. Allocates nothing.
         /// </summary>
-        public IkReport Solve(in BodyTargets targets, SkeletonPose pose, float deltaSeconds) => Solve(in targets, pose, deltaSeconds, _shrugReleaseSeconds > 0f);
+        public IkReport Solve(in BodyTargets targets, SkeletonPose pose, float deltaSeconds) => Solve(in targets, pose, deltaSeconds, _shrugReleaseSeconds > 0f, true);
 
-        private IkReport Solve(in BodyTargets targets, SkeletonPose pose, float deltaSeconds, bool holdShrugs)
+        private IkReport Solve(in BodyTargets targets, SkeletonPose pose, float deltaSeconds, bool holdShrugs, bool continuous)
         {
             if (pose == null) throw new ArgumentNullException(nameof(pose));
             var report = new IkReport();
@@ -230,8 +262,8 @@ namespace AvatarGo.Core
             }
             pose.UpdateWorld(_beforeLimbs);
 
-            if (targets.LeftFoot.IsActive) report.LeftFoot = TwoBoneIk.Solve(pose, _leftLeg, targets.LeftFoot.Goal, targets.LeftFoot.Hint);
-            if (targets.RightFoot.IsActive) report.RightFoot = TwoBoneIk.Solve(pose, _rightLeg, targets.RightFoot.Goal, targets.RightFoot.Hint);
+            report.LeftFoot = SolveLeg(pose, _leftLeg, _leftLegReach, _leftLegLength, in targets.LeftFoot, continuous, deltaSeconds);
+            report.RightFoot = SolveLeg(pose, _rightLeg, _rightLegReach, _rightLegLength, in targets.RightFoot, continuous, deltaSeconds);
             // The held shrugs: released by the time passed, then the start of each arm's solve (an inactive hand's arm keeps its
             // pose, its shrug released all the same).
             if (holdShrugs && deltaSeconds > 0f && deltaSeconds < float.PositiveInfinity)
@@ -392,6 +424,34 @@ namespace AvatarGo.Core
             double k2 = (2.0 * Chord(0f) - Chord(h) - Chord(-h)) / (2.0 * h * h);
             return k2 > 0.0 && double.IsFinite(k2) ? (float)k2 : 0f;
         }
+
+        // A leg; frame by frame (continuous), held straight, it bends for its filtered hip-to-ankle distance (LegReachFilter):
+        // the goal moved along the hip-to-goal line to that distance, its rotation kept. A lost foot restarts the filter.
+        private LimbResult SolveLeg(SkeletonPose pose, LimbChain leg, LegReachFilter filter, float reach, in LimbTarget target, bool continuous, float deltaSeconds)
+        {
+            if (!target.IsActive)
+            {
+                filter.Reset();
+                return default;
+            }
+            RigidPose goal = target.Goal;
+            if (continuous && _straightLegCutoffHz > 0f && Vectors.IsFinite(goal.Position))
+            {
+                Vector3 hip = pose.World[leg.Root].Position;
+                Vector3 toGoal = goal.Position - hip;
+                float distance = toGoal.Length();
+                float bendFor = filter.Filter(distance, reach, deltaSeconds, _straightLegCutoffHz);
+                if (distance > 1e-6f && bendFor != distance) goal = new RigidPose(hip + toGoal * (bendFor / distance), goal.Rotation);
+            }
+            LimbResult result = TwoBoneIk.Solve(pose, leg, goal, target.Hint);
+            if (goal.Position == target.Goal.Position) return result;
+            // Reported against the foot's own target, not the one moved for the filter.
+            float left = Vector3.Distance(pose.World[leg.End].Position, target.Goal.Position);
+            return new LimbResult(left <= TwoBoneIk.ReachedTolerance, left);
+        }
+
+        private static float Reach(RigidPose[] world, LimbChain limb) =>
+            Vector3.Distance(world[limb.Root].Position, world[limb.Middle].Position) + Vector3.Distance(world[limb.Middle].Position, world[limb.End].Position);
 
         // An arm starts from its clavicle's held shrug (the calibration pose's clavicle when none is held); if its hand still
         // cannot reach the goal, the clavicle turns toward it by the least angle that brings the goal within the arm's reach,

@@ -731,5 +731,118 @@ namespace AvatarGo.Core.Tests
                 }
             }
         }
+
+        // The T-pose's targets for a leg test: the hips and feet where the T-pose has them, plus noise; the knees' hints ahead.
+        private static BodyTargets LegTargets(Truth truth, RigidPose[] t, Vector3 hipsShift, Vector3 hipsNoise, Vector3 leftNoise, Vector3 rightNoise)
+        {
+            RigidPose hips = t[truth[HumanoidBone.Hips]], head = t[truth[HumanoidBone.Head]];
+            RigidPose left = t[truth[HumanoidBone.LeftFoot]], right = t[truth[HumanoidBone.RightFoot]];
+            Vector3 ahead = new Vector3(0f, 0f, 0.3f);
+            return new BodyTargets
+            {
+                Hips = new RigidPose(hips.Position + hipsShift + hipsNoise, hips.Rotation), HipsActive = true,
+                Head = new RigidPose(head.Position + hipsShift, head.Rotation), HeadActive = true,
+                SpineBend = Quaternion.Identity,
+                LeftFoot = new LimbTarget(new RigidPose(left.Position + leftNoise, left.Rotation), t[truth[HumanoidBone.LeftLowerLeg]].Position + ahead),
+                RightFoot = new LimbTarget(new RigidPose(right.Position + rightNoise, right.Rotation), t[truth[HumanoidBone.RightLowerLeg]].Position + ahead),
+                LeftHand = new LimbTarget(t[truth[HumanoidBone.LeftHand]], t[truth[HumanoidBone.LeftLowerArm]].Position),
+                RightHand = new LimbTarget(t[truth[HumanoidBone.RightHand]], t[truth[HumanoidBone.RightLowerArm]].Position),
+            };
+        }
+
+        /// <summary>
+        /// A leg held straight does not shiver with the devices' noise. Near full reach the knee's distance from the
+        /// hip-to-ankle line grows with the square root of the slack, so 1 mm of noise per coordinate on the hips and feet
+        /// (1.4 mm in the hip-to-ankle distance) moved a straight knee by centimetres a frame (found in review, 2026-12-03:
+        /// with <see cref="FullBodyIk.StraightLegCutoffHz"/> 0, as before, the knee's frame-to-frame move p95 / max
+        /// 28.9 / 40.3 mm on MocapBank, 28.3 / 39.4 on Mixamo); with the filter and its soft reach 6.4 / 12.9 mm on both, the
+        /// foot within 2.88 mm (p95) of where the noise-free targets put it (2.83 mm without the filter: the noise itself).
+        /// </summary>
+        [TestCase("mocapbank_30fps.bvh")]
+        [TestCase("mixamo_fingers_30fps.bvh")]
+        public void AStraightLegDoesNotShiverWithTheDevicesNoise(string clipName)
+        {
+            var truth = new Truth(clipName);
+            var calibration = new SkeletonPose(truth.Clip.Skeleton);
+            TPoser.Apply(truth.Map, calibration, RigidPose.Identity);
+            RigidPose[] t = calibration.World;
+            int knee = truth[HumanoidBone.LeftLowerLeg], foot = truth[HumanoidBone.LeftFoot];
+            Vector3 ankle = t[foot].Position;
+            const int frames = 900;
+            const float dt = 1f / 90f;
+            foreach (float cutoff in new[] { FullBodyIk.DefaultStraightLegCutoffHz, 0f })
+            {
+                var ik = new FullBodyIk(truth.Map, calibration) { StraightLegCutoffHz = cutoff };
+                var pose = new SkeletonPose(truth.Clip.Skeleton);
+                var random = new Random(11);
+                float Gaussian() => (float)(Math.Sqrt(-2.0 * Math.Log(1.0 - random.NextDouble())) * Math.Cos(2.0 * Math.PI * random.NextDouble()));
+                Vector3 Noise() => 0.001f * new Vector3(Gaussian(), Gaussian(), Gaussian());
+                var kneeMoves = new float[frames - 1];
+                var footOff = new float[frames];
+                Vector3 lastKnee = default;
+                for (int f = 0; f < frames; f++)
+                {
+                    BodyTargets noisy = LegTargets(truth, t, Vector3.Zero, Noise(), Noise(), Noise());
+                    ik.Solve(in noisy, pose, dt);
+                    Vector3 k = pose.World[knee].Position;
+                    if (f > 0) kneeMoves[f - 1] = Vector3.Distance(k, lastKnee) * 1000f;
+                    lastKnee = k;
+                    footOff[f] = Vector3.Distance(pose.World[foot].Position, ankle) * 1000f;
+                }
+                Array.Sort(kneeMoves);
+                Array.Sort(footOff);
+                float kneeP95 = kneeMoves[(int)(0.95 * kneeMoves.Length)], kneeMax = kneeMoves[kneeMoves.Length - 1];
+                float footP95 = footOff[(int)(0.95 * frames)];
+                TestContext.WriteLine($"{clipName}, cutoff {cutoff} Hz: knee's move a frame p95 / max {kneeP95:F1} / {kneeMax:F1} mm; foot from the noise-free ankle p95 {footP95:F2} mm");
+                if (cutoff > 0f)
+                {
+                    Assert.That(kneeP95, Is.LessThan(9f), "a straight knee steady (its move a frame, p95, mm)");
+                    Assert.That(kneeMax, Is.LessThan(20f), "a straight knee steady (its move a frame, max, mm)");
+                    Assert.That(footP95, Is.LessThan(3.5f), "the foot within the devices' noise of its place (p95, mm)");
+                }
+                else Assert.That(kneeP95, Is.GreaterThan(20f), "without the filter the noise moves a straight knee (p95, mm): what the filter is for");
+            }
+        }
+
+        /// <summary>
+        /// The straight leg's filter follows time, not frames: the hips lowered 4 cm from a straight-legged stand and raised
+        /// again over two seconds (noise-free) put the knee in the same place at the same time at 45 and at 180 frames a
+        /// second (0.77 mm apart at most), and the foot lags its target by at most 3.0 mm at either rate (the filter's lag on the
+        /// way down and up, 0.5 mm of it the soft reach).
+        /// </summary>
+        [Test]
+        public void TheStraightLegsFilterFollowsTimeNotFrames()
+        {
+            var truth = new Truth("mocapbank_30fps.bvh");
+            var calibration = new SkeletonPose(truth.Clip.Skeleton);
+            TPoser.Apply(truth.Map, calibration, RigidPose.Identity);
+            RigidPose[] t = calibration.World;
+            int knee = truth[HumanoidBone.LeftLowerLeg], foot = truth[HumanoidBone.LeftFoot];
+            Vector3 ankle = t[foot].Position;
+            // The hips' drop at time s: down and up again, smoothly (0.04 m at 1 s).
+            Vector3 Drop(double s) => new Vector3(0f, -0.02f * (float)(1.0 - Math.Cos(Math.PI * Math.Min(s, 2.0))), 0f);
+            Vector3[] KneeAt(int rate, out float footLag)
+            {
+                var ik = new FullBodyIk(truth.Map, calibration);
+                var pose = new SkeletonPose(truth.Clip.Skeleton);
+                int frames = 2 * rate + 1;
+                var knees = new Vector3[frames];
+                footLag = 0f;
+                for (int f = 0; f < frames; f++)
+                {
+                    BodyTargets targets = LegTargets(truth, t, Drop((double)f / rate), Vector3.Zero, Vector3.Zero, Vector3.Zero);
+                    ik.Solve(in targets, pose, 1f / rate);
+                    knees[f] = pose.World[knee].Position;
+                    footLag = Math.Max(footLag, Vector3.Distance(pose.World[foot].Position, ankle) * 1000f);
+                }
+                return knees;
+            }
+            Vector3[] slow = KneeAt(45, out float slowLag), fast = KneeAt(180, out float fastLag);
+            float apart = 0f;
+            for (int f = 0; f < slow.Length; f++) apart = Math.Max(apart, Vector3.Distance(slow[f], fast[4 * f]) * 1000f);
+            TestContext.WriteLine($"knee apart at 45 and 180 Hz at most {apart:F2} mm; the foot's lag at most {slowLag:F2} / {fastLag:F2} mm");
+            Assert.That(apart, Is.LessThan(1.5f), "the knee at the same time at either rate (mm)");
+            Assert.That(Math.Max(slowLag, fastLag), Is.LessThan(4f), "the foot's lag behind its target (mm)");
+        }
 }
 }

@@ -1,0 +1,84 @@
+using System;
+
+namespace AvatarGo.Core
+{
+    /// <summary>
+    /// Steadies a leg held straight. Near full reach the knee's distance from the hip-to-ankle line grows with the square
+    /// root of the slack (reach − distance), so the devices' noise in that distance (1.4 mm with 1 mm devices) moves a
+    /// straight knee by centimetres a frame where the wearer's hardly moves. The leg bends for this distance instead: the
+    /// hip-to-ankle distance through a One Euro filter (a cutoff that rises with the distance's speed, so a leg that bends
+    /// or straightens lags little), used in full at and beyond full reach and blending to the distance itself at
+    /// <see cref="GateOfReach"/> of the reach short of it, where the knee moves no more than 2.2 times the distance's change;
+    /// and a soft reach (<see cref="SoftZoneMetres"/>) so that what noise the filter leaves cannot swing a knee at full
+    /// reach, where the knee's slope has no bound. Time-based (frame-rate independent); allocation-free.
+    /// </summary>
+    internal sealed class LegReachFilter
+    {
+        /// <summary>How fast the cutoff rises with the distance's speed: Hz per m/s (the One Euro filter's beta).</summary>
+        private const float SpeedGain = 20f;
+
+        /// <summary>The cutoff of the speed estimate (Hz).</summary>
+        private const float SpeedCutoffHz = 1f;
+
+        /// <summary>
+        /// Where the filter fades out, as a share of the leg's reach (1/40: 22 mm for a 0.9 m leg): for two bones of length l
+        /// the knee lies about sqrt(l s) off the line at slack s, so it moves sqrt(l / s) / 2 times as far as the slack
+        /// changes, 2.2 times at s = l / 20, and more the straighter the leg.
+        /// </summary>
+        private const float GateOfReach = 1f / 40f;
+
+        /// <summary>
+        /// The soft reach's zone (2 mm) either side of full reach, a few times the filtered distance's own noise (0.3–0.5 mm
+        /// with 1 mm devices): the knee then moves at most sqrt(l / S) / 2 times the distance's change (7.5 times for 0.45 m
+        /// bones, against 21 times at 1 mm of slack and without bound at none), and a leg held straight is bent by
+        /// sqrt(l S) / 2 (15 mm at the knee, 4°), its foot at most S / 4 (0.5 mm) short of its target.
+        /// </summary>
+        private const float SoftZoneMetres = 0.002f;
+
+        /// <summary>The longest time one step filters over (s): a longer pause restarts the speed estimate from there.</summary>
+        private const float MaxStepSeconds = 0.25f;
+
+        private bool _has;
+        private float _value, _raw, _speed;
+
+        /// <summary>Forgets the history (the foot was lost, or the solve starts over): the next distance is taken as it is.</summary>
+        public void Reset() => _has = false;
+
+        /// <summary>
+        /// The distance the leg is to bend for, this frame <paramref name="deltaSeconds"/> after the previous one (0: a
+        /// repeated frame, which filters nothing) with cutoff <paramref name="cutoffHz"/> for a still leg. A distance or
+        /// reach that is not finite and positive is returned as it is and leaves the history alone.
+        /// </summary>
+        public float Filter(float distance, float reach, float deltaSeconds, float cutoffHz)
+        {
+            if (!(distance >= 0f && distance < float.PositiveInfinity && reach > 0f && reach < float.PositiveInfinity)) return distance;
+            if (!_has)
+            {
+                _has = true;
+                _value = _raw = distance;
+                _speed = 0f;
+                return distance;
+            }
+            if (deltaSeconds > 0f && deltaSeconds < float.PositiveInfinity)
+            {
+                float dt = Math.Min(deltaSeconds, MaxStepSeconds);
+                float speed = Math.Abs(distance - _raw) / dt;
+                _speed += Alpha(SpeedCutoffHz, dt) * (speed - _speed);
+                _value += Alpha(cutoffHz + SpeedGain * _speed, dt) * (distance - _value);
+            }
+            _raw = distance;
+            float weight = Math.Max(0f, Math.Min(1f, 1f - (reach - distance) / (reach * GateOfReach)));
+            float used = distance + weight * (_value - distance);
+            // The soft reach: within SoftZoneMetres of full reach the slack s becomes (s + S)² / 4S, so the knee's slope
+            // stays finite there (its offset grew as the square root of the slack) and the filter's residual noise cannot
+            // swing it by centimetres; 0 from S beyond full reach on.
+            float slack = reach - used;
+            if (slack < SoftZoneMetres)
+                used = reach - (slack > -SoftZoneMetres ? (slack + SoftZoneMetres) * (slack + SoftZoneMetres) / (4f * SoftZoneMetres) : 0f);
+            return used;
+        }
+
+        // The smoothing factor of an exponential filter with this cutoff over dt: 1 / (1 + tau / dt), tau = 1 / (2 pi cutoff).
+        private static float Alpha(float cutoffHz, float dt) => 1f / (1f + 1f / (2f * MathF.PI * cutoffHz * dt));
+    }
+}
