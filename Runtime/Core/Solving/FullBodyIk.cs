@@ -68,7 +68,14 @@ namespace AvatarGo.Core
         private readonly float _chordCurvature;       // k in chord(φ) ≈ L − kφ², the straight calibration back's (metres per radian²)
         private float _flexStiffnessSquared;          // λ² = 2 ChordNoiseMetres k (metres² per radian²)
         private float _chordNoiseMetres = DefaultChordNoiseMetres;
-        private const float FirstFlex = 1e-3f;        // a forward start: a straight back's chord is even in φ
+        // The first solve's start, forward of a straight back (whose chord is even in φ: the start decides which way the back
+        // curls): 0.01 rad, where the chord's slope is well above its float rounding (at 0.001 rad the chord changed by a few
+        // roundings over the slope's step, and a straight back curled whichever way they fell). Where the bend's share
+        // arches the back backward (the head behind the hips), the start is forward of that arch too, up to
+        // MaxStraightenedArch (0.05 rad, 3°) a joint, so that a slouched back does not flip to arched as the head passes over
+        // the hips; a back arched further, by a lean back, keeps its arch (Documentation~/solver.md, "The back's flexion").
+        private const float FirstFlex = 0.01f;
+        private const float MaxStraightenedArch = 0.05f;
 
         /// <summary>
         /// The default <see cref="ChordNoiseMetres"/>: 1.4 mm, the noise in the distance between two devices of 1 mm noise
@@ -310,11 +317,18 @@ namespace AvatarGo.Core
             Vector3 origin = w[_spine[0]].Position;
             float wanted = Vector3.Distance(origin, endTarget);
 
-            // The second solve (to the neck) starts from the first's answer: the joints below the neck bend about as much.
+            // The second solve (to the neck) starts from the first's answer: the joints below the neck bend about as much; the
+            // first starts FirstFlex forward of the straight back, which the bend's share may have arched (its turn about the
+            // hip line, backward).
             // Levenberg–Marquardt on one variable: a step that does not lower the cost is taken again with more damping
             // (a target beyond a straight back's reach, where the slope is 0, with no stiffness would otherwise send φ as
             // far as a step goes).
-            float phi = toNeck ? _spineFlex : FirstFlex;
+            float phi = _spineFlex;
+            if (!toNeck)
+            {
+                float backwardArch = alpha > 1e-6f ? -alpha / _spine.Length * Vector3.Dot(new Vector3(bend.X, bend.Y, bend.Z) / sinHalf, flexAxis) : 0f;
+                phi = FirstFlex + Math.Clamp(backwardArch, 0f, MaxStraightenedArch);
+            }
             float chord = BendSpine(pose, share, flexAxis, phi, count, end);
             float slope = ChordSlope(pose, share, flexAxis, phi, count, end, chord), posedPhi = phi + SlopeStepRadians;
             float cost = FlexCost(chord - wanted, phi), extraDamping = 0f;

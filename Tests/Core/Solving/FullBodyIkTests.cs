@@ -301,6 +301,58 @@ namespace AvatarGo.Core.Tests
             Assert.That(largest * 1000f, Is.LessThan(1f), "the chest's largest step (mm) for 0.1 mm steps of the head");
         }
 
+        /// <summary>
+        /// A slouched back: the head 1 and 2 cm nearer the first spine joint than in the calibration T-pose, swept over the hips
+        /// from 3 cm in front of the calibration's line to 3 cm behind it in 0.1 mm steps (an arc about the first spine joint),
+        /// on each shared skeleton with the default stiffness. The back must stay curled forward (the chest behind the line from
+        /// the first spine joint to the head) and the chest move at most 1 mm a step. Found in review: the back flexes about the
+        /// hip line, forward or backward as the solve's start leads it (the chord is even in φ about a straight back), and the
+        /// start was 0.001 rad forward of the calibration's back: once the head was 2–3 mm behind the hips the bend's share
+        /// arched the back by more than that, and the back flipped from curled to arched, the chest 14–98 mm in one 0.1 mm step
+        /// (standing still that slouched, 1 mm of device noise flipped it back and forth: the chest 70–140 mm a frame at p95).
+        /// </summary>
+        [TestCase("mocapbank_30fps.bvh")]
+        [TestCase("mixamo_fingers_30fps.bvh")]
+        [TestCase("rigify_6channel_24fps_first240.bvh")]
+        public void ASlouchedBackStaysCurledAsTheHeadPassesOverTheHips(string clipName)
+        {
+            var truth = new Truth(clipName);
+            var calibration = new SkeletonPose(truth.Clip.Skeleton);
+            TPoser.Apply(truth.Map, calibration, RigidPose.Identity);
+            RigidPose[] t = calibration.World;
+            RigidPose hips = t[truth[HumanoidBone.Hips]], head = t[truth[HumanoidBone.Head]];
+            Vector3 first = t[truth[HumanoidBone.Spine]].Position;
+            int chest = truth.Map.Has(HumanoidBone.UpperChest) ? truth[HumanoidBone.UpperChest] : truth[HumanoidBone.Chest];
+            Vector3 toHead = head.Position - first, up = Vector3.Normalize(toHead);
+            Vector3 right = Vector3.Normalize(t[truth[HumanoidBone.RightUpperLeg]].Position - t[truth[HumanoidBone.LeftUpperLeg]].Position);
+            Vector3 forward = Vector3.Normalize(Vector3.Cross(right, up));
+            var ik = new FullBodyIk(truth.Map, calibration);
+            var pose = new SkeletonPose(truth.Clip.Skeleton);
+            foreach (float nearer in new[] { 0.01f, 0.02f })
+            {
+                float reach = toHead.Length() - nearer, largest = 0f;
+                Vector3 previous = default;
+                for (int i = -300; i <= 300; i++)
+                {
+                    float angle = i * 1e-4f / reach; // 0.1 mm of arc a step, +-3 cm
+                    Vector3 headTarget = first + reach * (up * MathF.Cos(angle) + forward * MathF.Sin(angle));
+                    var targets = new BodyTargets
+                    {
+                        Hips = hips, HipsActive = true, Head = new RigidPose(headTarget, head.Rotation), HeadActive = true,
+                        SpineBend = Rotations.FromTo(head.Position - hips.Position, headTarget - hips.Position),
+                    };
+                    ik.Solve(in targets, pose);
+                    Vector3 c = pose.World[chest].Position, line = Vector3.Normalize(headTarget - first), off = c - first;
+                    off -= line * Vector3.Dot(off, line);
+                    Assert.That(Vector3.Dot(off, forward), Is.LessThan(0f), $"{clipName}, {nearer * 100} cm nearer, head {i * 0.1f} mm ahead: the chest behind the line (curled)");
+                    if (i > -300) largest = Math.Max(largest, Vector3.Distance(c, previous));
+                    previous = c;
+                }
+                TestContext.WriteLine($"{clipName}, {nearer * 100} cm nearer: the chest's largest step {largest * 1000f:F2} mm");
+                Assert.That(largest * 1000f, Is.LessThan(1f), $"{clipName}, {nearer * 100} cm nearer: the chest's largest step (mm) for 0.1 mm steps of the head");
+            }
+        }
+
         private static void SolveAll(FullBodyIk ik, BodyTargets[] frames, SkeletonPose pose, int passes)
         {
             for (int pass = 0; pass < passes; pass++)
@@ -554,8 +606,10 @@ namespace AvatarGo.Core.Tests
         /// A nod swings the shoulders no more when they hang from the neck: on MocapBank with its clavicles moved under its neck
         /// (as 3ds Max Biped hangs them), the head target turned 30° forward about its own position turns the neck as on the
         /// original (<see cref="FullBodyIk.NeckFollowsHead"/>; the spine below bends again to carry it) and each clavicle as
-        /// on the original, with the chest, within 0.01° (before, it turned with the neck as well), its shoulder within what
-        /// its root rides on the neck.
+        /// on the original, with the chest, within 0.05° (before, it turned with the neck as well), its shoulder within what
+        /// its root rides on the neck. (The two rigs' rest poses differ by float rounding, and the back's flexion is solved to
+        /// the float resolution of its cost, not further: the two clavicles 0.004° apart when its solve started 0.001 rad
+        /// forward, 0.013° since it starts 0.01 rad forward, 0.01–0.07° with the solve run to 400 iterations.)
         /// </summary>
         [Test]
         public void ANodDoesNotSwingShouldersThatHangFromTheNeck()
@@ -566,7 +620,7 @@ namespace AvatarGo.Core.Tests
             TestContext.WriteLine($"nod 30 deg, clavicles on the chest: neck turned {ownNeck:F2} deg, clavicle {ownClavicle:F3} deg, shoulder moved {ownShoulder:F1} mm; " +
                 $"under the neck: {neck:F2} deg, {clavicle:F3} deg, {shoulder:F1} mm");
             Assert.That(neck, Is.EqualTo(ownNeck).Within(0.01f).And.GreaterThan(3f), "the neck follows the head as it does on the original");
-            Assert.That(clavicle, Is.EqualTo(ownClavicle).Within(0.01f), "the clavicle turns as on the original (with the chest), not with the neck");
+            Assert.That(clavicle, Is.EqualTo(ownClavicle).Within(0.05f), "the clavicle turns as on the original (with the chest), not with the neck");
             Assert.That(shoulder, Is.EqualTo(ownShoulder).Within(15f), "the shoulder moves only as far as its root rides on the neck");
         }
 
@@ -582,7 +636,7 @@ namespace AvatarGo.Core.Tests
             var (clavicle, neck, shoulder) = Nod(new Truth(Topology.Reparented(clip, ("LeftCollar", "Neck"), ("RightCollar", "Neck"))), leftHandLost: true);
             TestContext.WriteLine($"nod 30 deg, left hand lost: clavicle {ownClavicle:F3} deg on the chest, {clavicle:F3} deg under the neck (neck {neck:F2} deg); shoulder {ownShoulder:F1} / {shoulder:F1} mm");
             Assert.That(neck, Is.GreaterThan(3f), "the neck follows the head");
-            Assert.That(clavicle, Is.EqualTo(ownClavicle).Within(0.01f), "the lost hand's clavicle turns as on the original, not with the neck");
+            Assert.That(clavicle, Is.EqualTo(ownClavicle).Within(0.05f), "the lost hand's clavicle turns as on the original, not with the neck");
             Assert.That(shoulder, Is.EqualTo(ownShoulder).Within(15f), "its shoulder moves only as far as its root rides on the neck");
         }
 
@@ -660,7 +714,8 @@ namespace AvatarGo.Core.Tests
         /// straight there, where the hips-to-head distance changes with the square of the flexion: chasing the noise to the
         /// last 0.1 mm flexed the back forward and back by centimetres from frame to frame (2026-12-02, before the back's
         /// stiffness: the chest p95 / max 20.8 / 31.1 mm from where the noise-free targets put it on MocapBank, 20.8 / 29.9 mm
-        /// on Mixamo). Now 2.8 / 9.0 and 2.9 / 18.8 mm: within the devices' noise but on the frames where the distance falls
+        /// on Mixamo). Now 3.0 / 7.4 and 3.3 / 18.8 mm (2.8 / 9.0 and 2.9 / 18.8 while the flexion started 0.001 rad forward,
+        /// <see cref="ASlouchedBackStaysCurledAsTheHeadPassesOverTheHips"/>): within the devices' noise but on the frames where the distance falls
         /// by more than the chord noise (where the back starts to flex, the flexion still grows with the square root of the
         /// shortfall); the head 2.75 mm p95 from its noisy target (2.56 before: a target beyond a straight back's reach).
         /// With <see cref="FullBodyIk.ChordNoiseMetres"/> 0 the back flexes until the head is on its target again.
