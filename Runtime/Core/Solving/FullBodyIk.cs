@@ -146,6 +146,8 @@ namespace AvatarGo.Core
         /// Precomputes the chains of <paramref name="map"/>'s skeleton. <paramref name="reference"/> is the pose the
         /// spine is bent from every frame (the avatar's calibration T-pose); null uses the skeleton's rest pose.
         /// </summary>
+        /// <exception cref="ArgumentException">The map lacks a required bone, or a joint of <paramref name="reference"/> is not
+        /// a pose (<see cref="RigidPose.IsValid"/>: a finite position, a unit rotation).</exception>
         public FullBodyIk(HumanoidMap map, SkeletonPose reference = null)
         {
             Map = map ?? throw new ArgumentNullException(nameof(map));
@@ -169,6 +171,9 @@ namespace AvatarGo.Core
                 _spineReference[i] = reference != null ? reference.Local[_spine[i]].Rotation : s.GetRestLocal(_spine[i]).Rotation;
             var refLocal = new RigidPose[s.JointCount];
             if (reference != null) Array.Copy(reference.Local, refLocal, refLocal.Length); else s.GetRestLocal(refLocal);
+            for (int j = 0; j < refLocal.Length; j++)
+                if (!refLocal[j].IsValid)
+                    throw new ArgumentException($"Joint '{s.GetName(j)}' of the reference pose is not a pose (a finite position, a unit rotation): {refLocal[j]}.", nameof(reference));
             var refWorld = new RigidPose[s.JointCount];
             s.ComputeWorld(refLocal, refWorld);
             if (_spine.Length >= 2 && _spine[_spine.Length - 1] == map[HumanoidBone.Neck])

@@ -353,6 +353,33 @@ namespace AvatarGo.Core.Tests
             }
         }
 
+        /// <summary>
+        /// A reference pose (the calibration T-pose the spine is bent from) with a joint that is not a pose (a rotation that is
+        /// not finite or not of unit length, a position that is not finite: <see cref="RigidPose.IsValid"/>) is refused when
+        /// the solver is built, naming the joint. Found in review: it was taken as it was, and every frame came out with NaN
+        /// bones (14 of MocapBank's 24 joints for a zero or NaN rotation of its hips or chest: a zero hips rotation made the
+        /// hip line the back flexes about NaN; 5, the arm's, for such a clavicle); a rotation of length 2 stretched every bone
+        /// below it fourfold.
+        /// </summary>
+        [Test]
+        public void AReferencePoseThatIsNotAPoseIsRefused()
+        {
+            var truth = new Truth("mocapbank_30fps.bvh");
+            foreach (HumanoidBone bone in new[] { HumanoidBone.Hips, HumanoidBone.Chest, HumanoidBone.LeftShoulder })
+            foreach (RigidPose bad in new[]
+            {
+                new RigidPose(Vector3.Zero, default), new RigidPose(Vector3.Zero, new Quaternion(float.NaN, 0f, 0f, 1f)),
+                new RigidPose(new Vector3(float.PositiveInfinity, 0f, 0f), Quaternion.Identity), new RigidPose(Vector3.Zero, new Quaternion(0f, 0f, 0f, 2f)),
+            })
+            {
+                var reference = new SkeletonPose(truth.Clip.Skeleton);
+                RigidPose rest = reference.Local[truth[bone]];
+                reference.Local[truth[bone]] = new RigidPose(rest.Position + bad.Position, bad.Rotation);
+                var e = Assert.Throws<ArgumentException>(() => new FullBodyIk(truth.Map, reference), $"{bone}: {bad}");
+                StringAssert.Contains(truth.Clip.Skeleton.GetName(truth[bone]), e.Message, "the joint is named");
+            }
+        }
+
         private static void SolveAll(FullBodyIk ik, BodyTargets[] frames, SkeletonPose pose, int passes)
         {
             for (int pass = 0; pass < passes; pass++)
