@@ -371,8 +371,9 @@ namespace AvatarGo.Core
             }
             // What the one-axis curve cannot reach (a target that needs the back's reference curve undone in another
             // plane) is polished by cyclic coordinate descent, top joint first.
-            // Not what the back's stiffness leaves on purpose (up to about the chord noise; polishing that away would flex
-            // the back by the noise again, and cost four passes a frame).
+            // Not what the back's stiffness leaves on purpose, up to about the chord noise (polishing that away would flex
+            // the back by the noise again). The neck's second solve leaves more (the whole spine's λ on a shorter chain), and
+            // that is polished: on the shared clips in most frames, all four passes (Documentation~/solver.md).
             float polishBeyond = SpineTolerance + _chordNoiseMetres;
             for (int pass = 0; pass < SpinePolishPasses && Vector3.Distance(w[_head].Position, headTarget) > polishBeyond; pass++)
                 for (int i = _spine.Length - 1; i >= 0; i--)
