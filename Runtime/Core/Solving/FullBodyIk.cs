@@ -116,8 +116,9 @@ namespace AvatarGo.Core
         /// straight: near full reach the knee's distance from the hip-to-ankle line grows with the square root of the slack,
         /// so the devices' noise in that distance alone moved a straight knee by centimetres a frame. Within 2.5 % of its
         /// reach of full reach a leg bends for the hip-to-ankle distance through a One Euro filter (its cutoff rising with the
-        /// distance's speed), with a soft reach 2 mm either side of full reach (a straight leg bent by 4°, its foot at most
-        /// 0.5 mm short), the foot then that filter's lag (a millimetre or so) from its target. Only the frame-by-frame
+        /// distance's speed), with a soft reach 1/450 of the reach either side of full reach (2 mm for a 0.9 m leg: a
+        /// straight leg bent by 4°, its foot at most 0.5 mm short), the foot then that filter's lag (a millimetre or so) from
+        /// its target. Only the frame-by-frame
         /// <see cref="Solve(in BodyTargets, SkeletonPose, float)"/> filters; 0 turns the filter off. See
         /// Documentation~/solver.md ("A straight limb shivers").
         /// </summary>

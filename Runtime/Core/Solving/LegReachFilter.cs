@@ -9,7 +9,7 @@ namespace AvatarGo.Core
     /// hip-to-ankle distance through a One Euro filter (a cutoff that rises with the distance's speed, so a leg that bends
     /// or straightens lags little), used in full at and beyond full reach and blending to the distance itself at
     /// <see cref="GateOfReach"/> of the reach short of it, where the knee moves no more than 2.2 times the distance's change;
-    /// and a soft reach (<see cref="SoftZoneMetres"/>) so that what noise the filter leaves cannot swing a knee at full
+    /// and a soft reach (<see cref="SoftZoneOfReach"/>) so that what noise the filter leaves cannot swing a knee at full
     /// reach, where the knee's slope has no bound. Time-based (frame-rate independent); allocation-free.
     /// </summary>
     internal sealed class LegReachFilter
@@ -28,12 +28,13 @@ namespace AvatarGo.Core
         private const float GateOfReach = 1f / 40f;
 
         /// <summary>
-        /// The soft reach's zone (2 mm) either side of full reach, a few times the filtered distance's own noise (0.3–0.5 mm
-        /// with 1 mm devices): the knee then moves at most sqrt(l / S) / 2 times the distance's change (7.5 times for 0.45 m
-        /// bones, against 21 times at 1 mm of slack and without bound at none), and a leg held straight is bent by
-        /// sqrt(l S) / 2 (15 mm at the knee, 4°), its foot at most S / 4 (0.5 mm) short of its target.
+        /// The soft reach's zone either side of full reach, as a share of the leg's reach (1/450: 2 mm for a 0.9 m leg, a few
+        /// times the filtered distance's own noise, 0.3–0.5 mm with 1 mm devices; a share, so that it bends every straight
+        /// leg by the same angle whatever the body's size): the knee then moves at most sqrt(l / S) / 2 times the distance's
+        /// change (7.5 times for 0.45 m bones, against 21 times at 1 mm of slack and without bound at none), and a leg held
+        /// straight is bent by sqrt(l S) / 2 (15 mm at the knee, 4°), its foot at most S / 4 (0.5 mm) short of its target.
         /// </summary>
-        private const float SoftZoneMetres = 0.002f;
+        private const float SoftZoneOfReach = 1f / 450f;
 
         /// <summary>The longest time one step filters over (s): a longer pause restarts the speed estimate from there.</summary>
         private const float MaxStepSeconds = 0.25f;
@@ -69,12 +70,11 @@ namespace AvatarGo.Core
             _raw = distance;
             float weight = Math.Max(0f, Math.Min(1f, 1f - (reach - distance) / (reach * GateOfReach)));
             float used = distance + weight * (_value - distance);
-            // The soft reach: within SoftZoneMetres of full reach the slack s becomes (s + S)² / 4S, so the knee's slope
-            // stays finite there (its offset grew as the square root of the slack) and the filter's residual noise cannot
-            // swing it by centimetres; 0 from S beyond full reach on.
-            float slack = reach - used;
-            if (slack < SoftZoneMetres)
-                used = reach - (slack > -SoftZoneMetres ? (slack + SoftZoneMetres) * (slack + SoftZoneMetres) / (4f * SoftZoneMetres) : 0f);
+            // The soft reach: within S of full reach the slack s becomes (s + S)² / 4S, so the knee's slope stays finite
+            // there (its offset grew as the square root of the slack) and the filter's residual noise cannot swing it by
+            // centimetres; 0 from S beyond full reach on.
+            float slack = reach - used, soft = reach * SoftZoneOfReach;
+            if (slack < soft) used = reach - (slack > -soft ? (slack + soft) * (slack + soft) / (4f * soft) : 0f);
             return used;
         }
 

@@ -837,8 +837,8 @@ namespace AvatarGo.Core.Tests
         /// hip-to-ankle line grows with the square root of the slack, so 1 mm of noise per coordinate on the hips and feet
         /// (1.4 mm in the hip-to-ankle distance) moved a straight knee by centimetres a frame (found in review, 2026-12-03:
         /// with <see cref="FullBodyIk.StraightLegCutoffHz"/> 0, as before, the knee's frame-to-frame move p95 / max
-        /// 28.9 / 40.3 mm on MocapBank, 28.3 / 39.4 on Mixamo); with the filter and its soft reach 6.4 / 12.9 mm on both, the
-        /// foot within 2.88 mm (p95) of where the noise-free targets put it (2.83 mm without the filter: the noise itself).
+        /// 28.9 / 40.3 mm on MocapBank, 28.3 / 39.4 on Mixamo); with the filter and its soft reach 6.4 / 13.1 and 6.6 / 13.4
+        /// mm, the foot within 2.87 mm (p95) of where the noise-free targets put it (2.83 mm without the filter: the noise).
         /// </summary>
         [TestCase("mocapbank_30fps.bvh")]
         [TestCase("mixamo_fingers_30fps.bvh")]
@@ -889,7 +889,7 @@ namespace AvatarGo.Core.Tests
         /// <summary>
         /// The straight leg's filter follows time, not frames: the hips lowered 4 cm from a straight-legged stand and raised
         /// again over two seconds (noise-free) put the knee in the same place at the same time at 45 and at 180 frames a
-        /// second (0.77 mm apart at most), and the foot lags its target by at most 3.0 mm at either rate (the filter's lag on the
+        /// second (0.78 mm apart at most), and the foot lags its target by at most 3.0 mm at either rate (the filter's lag on the
         /// way down and up, 0.5 mm of it the soft reach).
         /// </summary>
         [Test]
