@@ -926,5 +926,43 @@ namespace AvatarGo.Core.Tests
             Assert.That(apart, Is.LessThan(1.5f), "the knee at the same time at either rate (mm)");
             Assert.That(Math.Max(slowLag, fastLag), Is.LessThan(4f), "the foot's lag behind its target (mm)");
         }
+
+        /// <summary>
+        /// A foot goal that is not finite (a target made by hand, not by the pipeline, whose sample gate refuses such devices)
+        /// leaves the straight leg's filter as it was: no joint is ever NaN, and the frames after it are solved as if it had
+        /// not come (the same pose as a run without it, within float rounding).
+        /// </summary>
+        [Test]
+        public void ANonFiniteFootGoalLeavesTheStraightLegsFilterAsItWas()
+        {
+            var truth = new Truth("mocapbank_30fps.bvh");
+            var calibration = new SkeletonPose(truth.Clip.Skeleton);
+            TPoser.Apply(truth.Map, calibration, RigidPose.Identity);
+            RigidPose[] t = calibration.World;
+            int knee = truth[HumanoidBone.LeftLowerLeg];
+            var clean = new FullBodyIk(truth.Map, calibration);
+            var broken = new FullBodyIk(truth.Map, calibration);
+            SkeletonPose cleanPose = new SkeletonPose(truth.Clip.Skeleton), brokenPose = new SkeletonPose(truth.Clip.Skeleton);
+            for (int f = 0; f < 60; f++)
+            {
+                // The hips bob by 3 mm, so the legs stay within the filter's reach of straight.
+                var bob = new Vector3(0f, 0.003f * MathF.Sin(f * 0.3f), 0f);
+                BodyTargets targets = LegTargets(truth, t, bob, Vector3.Zero, Vector3.Zero, Vector3.Zero);
+                clean.Solve(in targets, cleanPose, 1f / 90f);
+                if (f == 20 || f == 21)
+                {
+                    BodyTargets bad = targets;
+                    bad.LeftFoot.Goal = new RigidPose(new Vector3(float.NaN, 0f, float.PositiveInfinity), bad.LeftFoot.Goal.Rotation);
+                    broken.Solve(in bad, brokenPose, 1f / 90f);
+                    continue; // the clean run's frame is solved above; the broken one had the bad goal instead
+                }
+                broken.Solve(in targets, brokenPose, 1f / 90f);
+                for (int j = 0; j < brokenPose.World.Length; j++)
+                    Assert.That(Vectors.IsFinite(brokenPose.World[j].Position) && Rotations.IsFinite(brokenPose.World[j].Rotation), Is.True, $"frame {f}, joint {j}");
+                if (f > 21)
+                    Assert.That(Vector3.Distance(brokenPose.World[knee].Position, cleanPose.World[knee].Position), Is.LessThan(0.0015f),
+                        $"frame {f}: the knee where the clean run has it (m); the filter missed only two frames' samples");
+            }
+        }
 }
 }
