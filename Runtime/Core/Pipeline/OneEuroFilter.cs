@@ -84,6 +84,6 @@ namespace AvatarGo.Core
         }
 
         // The smoothing factor of an exponential filter with this cutoff over dt: 1 / (1 + tau / dt), tau = 1 / (2 pi cutoff).
-        private static float Alpha(float cutoff, float dt) => 1f / (1f + 1f / (2f * MathF.PI * cutoff * dt));
+        internal static float Alpha(float cutoff, float dt) => 1f / (1f + 1f / (2f * MathF.PI * cutoff * dt));
     }
 }

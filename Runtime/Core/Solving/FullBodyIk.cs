@@ -104,8 +104,7 @@ namespace AvatarGo.Core
             }
         }
 
-        private readonly LegReachFilter _leftLegReach = new LegReachFilter(), _rightLegReach = new LegReachFilter();
-        private readonly float _leftLegLength, _rightLegLength;   // thigh + shin: each leg's full reach
+        private readonly LegReachFilter _leftLegReach, _rightLegReach;
         private float _straightLegCutoffHz = DefaultStraightLegCutoffHz;
 
         /// <summary>The default <see cref="StraightLegCutoffHz"/>: 1 Hz.</summary>
@@ -184,8 +183,8 @@ namespace AvatarGo.Core
             }
             _leftLeg = new LimbChain(s, map[HumanoidBone.LeftUpperLeg], map[HumanoidBone.LeftLowerLeg], map[HumanoidBone.LeftFoot]);
             _rightLeg = new LimbChain(s, map[HumanoidBone.RightUpperLeg], map[HumanoidBone.RightLowerLeg], map[HumanoidBone.RightFoot]);
-            _leftLegLength = Reach(refWorld, _leftLeg);
-            _rightLegLength = Reach(refWorld, _rightLeg);
+            _leftLegReach = new LegReachFilter(Reach(refWorld, _leftLeg));
+            _rightLegReach = new LegReachFilter(Reach(refWorld, _rightLeg));
             _leftArm = new LimbChain(s, map[HumanoidBone.LeftUpperArm], map[HumanoidBone.LeftLowerArm], map[HumanoidBone.LeftHand]);
             _rightArm = new LimbChain(s, map[HumanoidBone.RightUpperArm], map[HumanoidBone.RightLowerArm], map[HumanoidBone.RightHand]);
             Vector3 hipLine = Vectors.NormalizeOr(refWorld[_rightLeg.Root].Position - refWorld[_leftLeg.Root].Position, Vector3.UnitX);
@@ -275,8 +274,8 @@ namespace AvatarGo.Core
             }
             pose.UpdateWorld(_beforeLimbs);
 
-            report.LeftFoot = SolveLeg(pose, _leftLeg, _leftLegReach, _leftLegLength, in targets.LeftFoot, continuous, deltaSeconds);
-            report.RightFoot = SolveLeg(pose, _rightLeg, _rightLegReach, _rightLegLength, in targets.RightFoot, continuous, deltaSeconds);
+            report.LeftFoot = SolveLeg(pose, _leftLeg, _leftLegReach, in targets.LeftFoot, continuous, deltaSeconds);
+            report.RightFoot = SolveLeg(pose, _rightLeg, _rightLegReach, in targets.RightFoot, continuous, deltaSeconds);
             // The held shrugs: released by the time passed, then the start of each arm's solve (an inactive hand's arm keeps its
             // pose, its shrug released all the same).
             if (holdShrugs && deltaSeconds > 0f && deltaSeconds < float.PositiveInfinity)
@@ -448,7 +447,7 @@ namespace AvatarGo.Core
 
         // A leg; frame by frame (continuous), held straight, it bends for its filtered hip-to-ankle distance (LegReachFilter):
         // the goal moved along the hip-to-goal line to that distance, its rotation kept. A lost foot restarts the filter.
-        private LimbResult SolveLeg(SkeletonPose pose, LimbChain leg, LegReachFilter filter, float reach, in LimbTarget target, bool continuous, float deltaSeconds)
+        private LimbResult SolveLeg(SkeletonPose pose, LimbChain leg, LegReachFilter filter, in LimbTarget target, bool continuous, float deltaSeconds)
         {
             if (!target.IsActive)
             {
@@ -461,7 +460,7 @@ namespace AvatarGo.Core
                 Vector3 hip = pose.World[leg.Root].Position;
                 Vector3 toGoal = goal.Position - hip;
                 float distance = toGoal.Length();
-                float bendFor = filter.Filter(distance, reach, deltaSeconds, _straightLegCutoffHz);
+                float bendFor = filter.Filter(distance, deltaSeconds, _straightLegCutoffHz);
                 if (distance > 1e-6f && bendFor != distance) goal = new RigidPose(hip + toGoal * (bendFor / distance), goal.Rotation);
             }
             LimbResult result = TwoBoneIk.Solve(pose, leg, goal, target.Hint);

@@ -36,22 +36,27 @@ namespace AvatarGo.Core
         /// </summary>
         private const float SoftZoneOfReach = 1f / 450f;
 
-        /// <summary>The longest time one step filters over (s): a longer pause restarts the speed estimate from there.</summary>
+        /// <summary>The longest time one step filters over (s): a longer pause is filtered as if it were that long.</summary>
         private const float MaxStepSeconds = 0.25f;
 
+        private readonly float _reach;              // the leg's full reach: thigh + shin
         private bool _has;
         private float _value, _raw, _speed;
+
+        /// <summary>A filter for a leg whose thigh and shin together are <paramref name="reach"/> long (metres).</summary>
+        public LegReachFilter(float reach) => _reach = reach;
 
         /// <summary>Forgets the history (the foot was lost, or the solve starts over): the next distance is taken as it is.</summary>
         public void Reset() => _has = false;
 
         /// <summary>
         /// The distance the leg is to bend for, this frame <paramref name="deltaSeconds"/> after the previous one (0: a
-        /// repeated frame, which filters nothing) with cutoff <paramref name="cutoffHz"/> for a still leg. A distance or
-        /// reach that is not finite and positive is returned as it is and leaves the history alone.
+        /// repeated frame, which filters nothing) with cutoff <paramref name="cutoffHz"/> for a still leg. A distance that is
+        /// not finite (or a reach that is not finite and positive) is returned as it is and leaves the history alone.
         /// </summary>
-        public float Filter(float distance, float reach, float deltaSeconds, float cutoffHz)
+        public float Filter(float distance, float deltaSeconds, float cutoffHz)
         {
+            float reach = _reach;
             if (!(distance >= 0f && distance < float.PositiveInfinity && reach > 0f && reach < float.PositiveInfinity)) return distance;
             if (!_has)
             {
@@ -64,8 +69,8 @@ namespace AvatarGo.Core
             {
                 float dt = Math.Min(deltaSeconds, MaxStepSeconds);
                 float speed = Math.Abs(distance - _raw) / dt;
-                _speed += Alpha(SpeedCutoffHz, dt) * (speed - _speed);
-                _value += Alpha(cutoffHz + SpeedGain * _speed, dt) * (distance - _value);
+                _speed += OneEuroFilter.Alpha(SpeedCutoffHz, dt) * (speed - _speed);
+                _value += OneEuroFilter.Alpha(cutoffHz + SpeedGain * _speed, dt) * (distance - _value);
             }
             _raw = distance;
             float weight = Math.Max(0f, Math.Min(1f, 1f - (reach - distance) / (reach * GateOfReach)));
@@ -78,7 +83,5 @@ namespace AvatarGo.Core
             return used;
         }
 
-        // The smoothing factor of an exponential filter with this cutoff over dt: 1 / (1 + tau / dt), tau = 1 / (2 pi cutoff).
-        private static float Alpha(float cutoffHz, float dt) => 1f / (1f + 1f / (2f * MathF.PI * cutoffHz * dt));
     }
 }
