@@ -69,6 +69,15 @@ namespace AvatarGo
             "further forward than in the T-pose where they are (solver.md, the held shrug). 0: none held. Read when the pipeline is made.")]
         private float m_ShrugReleaseSeconds = 3f; // FullBodyIk.DefaultShrugReleaseSeconds (the prefab generator reads literals only)
 
+        [SerializeField, Range(0f, 10f), Tooltip("The cutoff (Hz) of the filter that steadies a leg held straight against the trackers' noise (near full reach the knee's " +
+            "offset from the hip-ankle line grows with the square root of the slack, so millimetres of noise swing a straight knee by centimetres; solver.md, " +
+            "a straight limb shivers). Lower is steadier and lags more as the knee starts to bend. 0: off, the exact reach every frame. Read when the pipeline is made.")]
+        private float m_StraightLegCutoffHz = 1f; // FullBodyIk.DefaultStraightLegCutoffHz
+
+        [SerializeField, Range(0f, 0.02f), Tooltip("The change (m) in the hips-to-head distance that the back does not flex for: the noise of the pelvis tracker and the " +
+            "HMD together (1.4 mm for two 1 mm devices). Larger steadies the chest and ignores small real bends; 0 flexes for every change. Read when the pipeline is made.")]
+        private float m_SpineChordNoiseMetres = 0.0014f; // FullBodyIk.DefaultChordNoiseMetres
+
         [SerializeField, Tooltip("On start, reuse the calibration saved for this avatar when the same devices (by serial) are connected.")]
         private bool m_RestoreSavedProfile = true;
 
@@ -161,6 +170,12 @@ namespace AvatarGo
 
         /// <summary>How slowly a shoulder releases a held shrug (s, clamped to 0…10, NaN gives the default 3; 0 holds none; <c>PipelineSettings.ShrugReleaseSeconds</c>); read when the pipeline is made.</summary>
         public float ShrugReleaseSeconds { get => m_ShrugReleaseSeconds; set => m_ShrugReleaseSeconds = float.IsNaN(value) ? FullBodyIk.DefaultShrugReleaseSeconds : Math.Min(10f, Math.Max(0f, value)); }
+
+        /// <summary>The straight leg's filter cutoff (Hz, clamped to 0…10, NaN gives the default 1; 0 turns it off; <c>PipelineSettings.StraightLegCutoffHz</c>); read when the pipeline is made.</summary>
+        public float StraightLegCutoffHz { get => m_StraightLegCutoffHz; set => m_StraightLegCutoffHz = float.IsNaN(value) ? FullBodyIk.DefaultStraightLegCutoffHz : Math.Min(10f, Math.Max(0f, value)); }
+
+        /// <summary>The hips-to-head change the back does not flex for (m, clamped to 0…0.02, NaN gives the default 0.0014; <c>PipelineSettings.SpineChordNoiseMetres</c>); read when the pipeline is made.</summary>
+        public float SpineChordNoiseMetres { get => m_SpineChordNoiseMetres; set => m_SpineChordNoiseMetres = float.IsNaN(value) ? FullBodyIk.DefaultChordNoiseMetres : Math.Min(0.02f, Math.Max(0f, value)); }
 
         /// <summary>Whether each new calibration is followed by the refinement exercise (<see cref="Refinement"/>); read when a calibration completes.</summary>
         public bool RefinesAfterCalibration { get => m_RefineAfterCalibration; set => m_RefineAfterCalibration = value; }
@@ -449,6 +464,9 @@ namespace AvatarGo
             AnnounceRefinement(_refinement.Cancel(old)); // an exercise recorded on the old pipeline is dropped
             var settings = new PipelineSettings { Offsets = m_Offsets };
             settings.ShrugReleaseSeconds = m_ShrugReleaseSeconds >= 0f && m_ShrugReleaseSeconds <= 10f ? m_ShrugReleaseSeconds : FullBodyIk.DefaultShrugReleaseSeconds;
+            // Serialized values can be anything a hand-edited asset holds: out of range gives the default.
+            settings.StraightLegCutoffHz = m_StraightLegCutoffHz >= 0f && m_StraightLegCutoffHz <= 10f ? m_StraightLegCutoffHz : FullBodyIk.DefaultStraightLegCutoffHz;
+            settings.SpineChordNoiseMetres = m_SpineChordNoiseMetres >= 0f && m_SpineChordNoiseMetres <= 0.02f ? m_SpineChordNoiseMetres : FullBodyIk.DefaultChordNoiseMetres;
             settings.Calibration.Proportions.Mode = m_ScaleMode;
             settings.Calibration.SpineJointsAsBound = SpineJointsAsBound;
             if (_fingers != null) _fingers.ConfigureHands(settings);

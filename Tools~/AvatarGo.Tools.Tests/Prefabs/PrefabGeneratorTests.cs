@@ -70,6 +70,22 @@ public class PrefabGeneratorTests
         Assert.That(objects.Count(o => o.ClassId == 4 && Scalar(o.Body, "m_Father", "fileID") == "0"), Is.EqualTo(1));
     }
 
+    /// <summary>
+    /// The calibrator's serialized tuning fields start at the core's defaults (the generator evaluates literals only, so the
+    /// component repeats them): a default changed in <c>FullBodyIk</c> and not in the component would give Unity users
+    /// another solver than the one measured.
+    /// </summary>
+    [Test]
+    public void TheCalibratorsTuningStartsAtTheCoresDefaults()
+    {
+        List<UnityYamlObject> objects = UnityYaml.Parse(File.ReadAllText(Committed));
+        UnityYamlObject calibrator = objects.Single(o => o.ClassId == 114 && Scalar(o.Body, "m_Script", "guid") == ScriptGuid("Calibration/AvatarGoCalibrator.cs"));
+        float Field(string name) => float.Parse(Scalar(calibrator.Body, name), System.Globalization.CultureInfo.InvariantCulture);
+        Assert.That(Field("m_ShrugReleaseSeconds"), Is.EqualTo(AvatarGo.Core.FullBodyIk.DefaultShrugReleaseSeconds));
+        Assert.That(Field("m_StraightLegCutoffHz"), Is.EqualTo(AvatarGo.Core.FullBodyIk.DefaultStraightLegCutoffHz));
+        Assert.That(Field("m_SpineChordNoiseMetres"), Is.EqualTo(AvatarGo.Core.FullBodyIk.DefaultChordNoiseMetres));
+    }
+
     [Test]
     public void WrongFieldNamePlantedInACopyFailsTheLint()
     {
