@@ -74,6 +74,11 @@ namespace AvatarGo
             "a straight limb shivers). Lower is steadier and lags more as the knee starts to bend. 0: off, the exact reach every frame. Read when the pipeline is made.")]
         private float m_StraightLegCutoffHz = 1f; // FullBodyIk.DefaultStraightLegCutoffHz
 
+        [SerializeField, Range(0f, 10f), Tooltip("The cutoff (Hz) of the filter that steadies an arm held straight against the trackers' noise, as for the legs; the clavicle " +
+            "turns by up to 3 degrees to take up what the filter takes out, so the hand stays on its controller and the shoulder moves by about a millimetre. It cannot steady " +
+            "an arm held out sideways along its clavicle. 0: off. Read when the pipeline is made.")]
+        private float m_StraightArmCutoffHz = 1f; // FullBodyIk.DefaultStraightArmCutoffHz
+
         [SerializeField, Range(0f, 0.02f), Tooltip("The change (m) in the hips-to-head distance that the back does not flex for: the noise of the pelvis tracker and the " +
             "HMD together (1.4 mm for two 1 mm devices). Larger steadies the chest and ignores small real bends; 0 flexes for every change. Read when the pipeline is made.")]
         private float m_SpineChordNoiseMetres = 0.0014f; // FullBodyIk.DefaultChordNoiseMetres
@@ -173,6 +178,9 @@ namespace AvatarGo
 
         /// <summary>The straight leg's filter cutoff (Hz, clamped to 0…10, NaN gives the default 1; 0 turns it off; <c>PipelineSettings.StraightLegCutoffHz</c>); read when the pipeline is made.</summary>
         public float StraightLegCutoffHz { get => m_StraightLegCutoffHz; set => m_StraightLegCutoffHz = float.IsNaN(value) ? FullBodyIk.DefaultStraightLegCutoffHz : Math.Min(10f, Math.Max(0f, value)); }
+
+        /// <summary>The straight arm's filter cutoff (Hz, clamped to 0…10, NaN gives the default 1; 0 turns it off; <c>PipelineSettings.StraightArmCutoffHz</c>); read when the pipeline is made.</summary>
+        public float StraightArmCutoffHz { get => m_StraightArmCutoffHz; set => m_StraightArmCutoffHz = float.IsNaN(value) ? FullBodyIk.DefaultStraightArmCutoffHz : Math.Min(10f, Math.Max(0f, value)); }
 
         /// <summary>The hips-to-head change the back does not flex for (m, clamped to 0…0.02, NaN gives the default 0.0014; <c>PipelineSettings.SpineChordNoiseMetres</c>); read when the pipeline is made.</summary>
         public float SpineChordNoiseMetres { get => m_SpineChordNoiseMetres; set => m_SpineChordNoiseMetres = float.IsNaN(value) ? FullBodyIk.DefaultChordNoiseMetres : Math.Min(0.02f, Math.Max(0f, value)); }
@@ -466,6 +474,7 @@ namespace AvatarGo
             settings.ShrugReleaseSeconds = m_ShrugReleaseSeconds >= 0f && m_ShrugReleaseSeconds <= 10f ? m_ShrugReleaseSeconds : FullBodyIk.DefaultShrugReleaseSeconds;
             // Serialized values can be anything a hand-edited asset holds: out of range gives the default.
             settings.StraightLegCutoffHz = m_StraightLegCutoffHz >= 0f && m_StraightLegCutoffHz <= 10f ? m_StraightLegCutoffHz : FullBodyIk.DefaultStraightLegCutoffHz;
+            settings.StraightArmCutoffHz = m_StraightArmCutoffHz >= 0f && m_StraightArmCutoffHz <= 10f ? m_StraightArmCutoffHz : FullBodyIk.DefaultStraightArmCutoffHz;
             settings.SpineChordNoiseMetres = m_SpineChordNoiseMetres >= 0f && m_SpineChordNoiseMetres <= 0.02f ? m_SpineChordNoiseMetres : FullBodyIk.DefaultChordNoiseMetres;
             settings.Calibration.Proportions.Mode = m_ScaleMode;
             settings.Calibration.SpineJointsAsBound = SpineJointsAsBound;

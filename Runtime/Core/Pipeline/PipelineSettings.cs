@@ -73,6 +73,21 @@ namespace AvatarGo.Core
                 : throw new ArgumentOutOfRangeException(nameof(value), value, "The straight leg's cutoff must be 0 or more Hz.");
         }
 
+        private float _straightArmCutoffHz = FullBodyIk.DefaultStraightArmCutoffHz;
+
+        /// <summary>
+        /// The cutoff (Hz, <see cref="FullBodyIk.DefaultStraightArmCutoffHz"/>; 0 turns it off) of the filter that steadies an
+        /// arm held straight against the devices' noise, its clavicle taking up the difference so the hand stays on its goal;
+        /// <see cref="FullBodyIk.StraightArmCutoffHz"/>. Read when calibration completes.
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
+        public float StraightArmCutoffHz
+        {
+            get => _straightArmCutoffHz;
+            set => _straightArmCutoffHz = value >= 0f && !float.IsInfinity(value) ? value
+                : throw new ArgumentOutOfRangeException(nameof(value), value, "The straight arm's cutoff must be 0 or more Hz.");
+        }
+
         /// <summary>The left hand's controller and grip.</summary>
         public HandSettings LeftHand { get; } = new HandSettings();
 

@@ -343,6 +343,7 @@ namespace AvatarGo.Core
             _ik.ShrugReleaseSeconds = Settings.ShrugReleaseSeconds;
             _ik.ChordNoiseMetres = Settings.SpineChordNoiseMetres;
             _ik.StraightLegCutoffHz = Settings.StraightLegCutoffHz;
+            _ik.StraightArmCutoffHz = Settings.StraightArmCutoffHz;
             TrackingSettings tracking = Settings.Tracking;
             _smoothing = tracking.Smoothing ? new OneEuroFilter(_devices.Length, tracking.SmoothingMinCutoff, tracking.SmoothingBeta) : null;
             _accepted = new DeviceSample[_devices.Length];

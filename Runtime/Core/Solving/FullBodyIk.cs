@@ -43,6 +43,13 @@ namespace AvatarGo.Core
         private readonly Shoulder _leftShoulder, _rightShoulder;
         private const float MaxClavicleDegrees = 20f;
 
+        // The straight arm's steadying (StraightArmCutoffHz): the clavicle's largest turn for it (3° moves a 15 cm clavicle's
+        // shoulder by 8 mm), and the shares of the shoulder's move that change its distance from the hand's goal below which
+        // it does nothing and from which it does all (the shoulder then moves at most 4 and 2 times what the distance changes).
+        private const float MaxSteadyingDegrees = 3f;
+        private const float SteadyingNoEfficiency = 0.25f;
+        private const float SteadyingFullEfficiency = 0.5f;
+
         // A shrug that reached its goal is held; one whose goal needed more than the shoulder's range, or lay beyond any
         // reach (counted as the shoulder's arc that distance would be: ShrugToward), says less about the shoulder the
         // further it is (a longer reach than the avatar's, then a glitch or swapped controllers): held in part,
@@ -104,7 +111,7 @@ namespace AvatarGo.Core
             }
         }
 
-        private readonly LegReachFilter _leftLegReach, _rightLegReach;
+        private readonly LimbReachFilter _leftLegReach, _rightLegReach, _leftArmReach, _rightArmReach;
         private float _straightLegCutoffHz = DefaultStraightLegCutoffHz;
 
         /// <summary>The default <see cref="StraightLegCutoffHz"/>: 1 Hz.</summary>
@@ -131,6 +138,35 @@ namespace AvatarGo.Core
                 _straightLegCutoffHz = value;
                 _leftLegReach.Reset();
                 _rightLegReach.Reset();
+            }
+        }
+
+        private float _straightArmCutoffHz = DefaultStraightArmCutoffHz;
+
+        /// <summary>The default <see cref="StraightArmCutoffHz"/>: 1 Hz.</summary>
+        public const float DefaultStraightArmCutoffHz = 1f;
+
+        /// <summary>
+        /// The cutoff (Hz, for a still arm; <see cref="DefaultStraightArmCutoffHz"/>) of the filter that steadies an arm held
+        /// straight, as <see cref="StraightLegCutoffHz"/> does a leg, without moving the hand off its goal: within 2.5 % of its
+        /// reach of full reach the clavicle turns (for this frame only, not held like the shrug) by the least angle, at most
+        /// 3°, that puts the shoulder the filtered distance from the hand's goal, and the arm is solved exactly from there, so
+        /// the elbow bends for the filtered distance and the hand is where the exact solve puts it. The shoulder then moves by
+        /// the noise the filter takes out (about a millimetre; at most twice that where the turn is used in full, the arm within
+        /// 60° of the way the turn moves the shoulder), and the clavicle does nothing where the arm points along it (arms out
+        /// sideways, as in the T-pose), whose elbow still shivers. Only the frame-by-frame <see cref="Solve(in BodyTargets, SkeletonPose, float)"/> steadies, and
+        /// only an arm with a clavicle; 0 turns it off. See Documentation~/solver.md ("A straight limb shivers").
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
+        public float StraightArmCutoffHz
+        {
+            get => _straightArmCutoffHz;
+            set
+            {
+                if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The straight arm's cutoff must be 0 or more Hz.");
+                _straightArmCutoffHz = value;
+                _leftArmReach.Reset();
+                _rightArmReach.Reset();
             }
         }
 
@@ -183,10 +219,12 @@ namespace AvatarGo.Core
             }
             _leftLeg = new LimbChain(s, map[HumanoidBone.LeftUpperLeg], map[HumanoidBone.LeftLowerLeg], map[HumanoidBone.LeftFoot]);
             _rightLeg = new LimbChain(s, map[HumanoidBone.RightUpperLeg], map[HumanoidBone.RightLowerLeg], map[HumanoidBone.RightFoot]);
-            _leftLegReach = new LegReachFilter(Reach(refWorld, _leftLeg));
-            _rightLegReach = new LegReachFilter(Reach(refWorld, _rightLeg));
+            _leftLegReach = new LimbReachFilter(Reach(refWorld, _leftLeg));
+            _rightLegReach = new LimbReachFilter(Reach(refWorld, _rightLeg));
             _leftArm = new LimbChain(s, map[HumanoidBone.LeftUpperArm], map[HumanoidBone.LeftLowerArm], map[HumanoidBone.LeftHand]);
             _rightArm = new LimbChain(s, map[HumanoidBone.RightUpperArm], map[HumanoidBone.RightLowerArm], map[HumanoidBone.RightHand]);
+            _leftArmReach = new LimbReachFilter(Reach(refWorld, _leftArm));
+            _rightArmReach = new LimbReachFilter(Reach(refWorld, _rightArm));
             Vector3 hipLine = Vectors.NormalizeOr(refWorld[_rightLeg.Root].Position - refWorld[_leftLeg.Root].Position, Vector3.UnitX);
             _hipLineInHips = Vector3.Normalize(Vector3.Transform(hipLine, Quaternion.Conjugate(refWorld[_hips].Rotation)));
             _chordCurvature = ChordCurvature(refWorld, hipLine);
@@ -284,10 +322,10 @@ namespace AvatarGo.Core
                 _leftShoulder.Held = Quaternion.Normalize(Quaternion.Slerp(_leftShoulder.Held, Quaternion.Identity, release));
                 _rightShoulder.Held = Quaternion.Normalize(Quaternion.Slerp(_rightShoulder.Held, Quaternion.Identity, release));
             }
-            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftShoulder, in targets.LeftHand, holdShrugs);
-            else _leftShoulder.KeepStill(pose, holdShrugs);
-            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightShoulder, in targets.RightHand, holdShrugs);
-            else _rightShoulder.KeepStill(pose, holdShrugs);
+            if (targets.LeftHand.IsActive) report.LeftHand = SolveArm(pose, _leftArm, _leftShoulder, _leftArmReach, in targets.LeftHand, holdShrugs, continuous, deltaSeconds);
+            else { _leftShoulder.KeepStill(pose, holdShrugs); _leftArmReach.Reset(); }
+            if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightShoulder, _rightArmReach, in targets.RightHand, holdShrugs, continuous, deltaSeconds);
+            else { _rightShoulder.KeepStill(pose, holdShrugs); _rightArmReach.Reset(); }
             pose.UpdateWorld();
             return report;
         }
@@ -447,7 +485,7 @@ namespace AvatarGo.Core
 
         // A leg; frame by frame (continuous), held straight, it bends for its filtered hip-to-ankle distance (LegReachFilter):
         // the goal moved along the hip-to-goal line to that distance, its rotation kept. A lost foot restarts the filter.
-        private LimbResult SolveLeg(SkeletonPose pose, LimbChain leg, LegReachFilter filter, in LimbTarget target, bool continuous, float deltaSeconds)
+        private LimbResult SolveLeg(SkeletonPose pose, LimbChain leg, LimbReachFilter filter, in LimbTarget target, bool continuous, float deltaSeconds)
         {
             if (!target.IsActive)
             {
@@ -478,15 +516,16 @@ namespace AvatarGo.Core
         // the whole shrug at most MaxClavicleDegrees from the calibration pose (as a shoulder shrugs), the arm is solved
         // again, and the shrug is held (whole if it was enough, in part a little beyond: HoldWeight): a goal out of any
         // shoulder's reach (swapped controllers, a glitch) says nothing about where the wearer's shoulder is. What is still
-        // out of reach is reported.
-        private static LimbResult SolveArm(SkeletonPose pose, LimbChain arm, Shoulder shoulder, in LimbTarget target, bool hold)
+        // out of reach is reported. Frame by frame (continuous), an arm held straight is then steadied (Steady).
+        private LimbResult SolveArm(SkeletonPose pose, LimbChain arm, Shoulder shoulder, LimbReachFilter filter, in LimbTarget target, bool hold, bool continuous, float deltaSeconds)
         {
             if (shoulder.Clavicle < 0) return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
             Quaternion frameRotation = shoulder.FrameRotation(pose);
             Quaternion start = hold ? shoulder.Held : Quaternion.Identity;
             shoulder.Set(pose, frameRotation, Quaternion.Normalize(start * shoulder.Reference));
             LimbResult result = TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
-            if (result.Reached || !(result.DistanceLeft > 1e-4f)) return result;
+            if (result.Reached || !(result.DistanceLeft > 1e-4f))
+                return continuous ? Steady(pose, arm, shoulder, filter, in target, frameRotation, start, result, deltaSeconds) : result;
 
             Quaternion turn = ShrugToward(pose.World[shoulder.Clavicle].Position, pose.World[arm.Root].Position, pose.World[arm.End].Position,
                 target.Goal.Position, out float beyondDegrees);
@@ -497,7 +536,57 @@ namespace AvatarGo.Core
             if (angle > MaxClavicleDegrees) shrug = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Identity, shrug, MaxClavicleDegrees / angle));
             shoulder.Set(pose, frameRotation, Quaternion.Normalize(shrug * shoulder.Reference));
             if (hold) shoulder.Held = Quaternion.Normalize(Quaternion.Slerp(shoulder.Held, shrug, HoldWeight(needed)));
+            result = TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
+            return continuous ? Steady(pose, arm, shoulder, filter, in target, frameRotation, shrug, result, deltaSeconds) : result;
+        }
+
+        // An arm held straight (StraightArmCutoffHz): its shoulder-to-goal distance through the limb's filter, and the
+        // clavicle turned, for this frame only, by the least angle (at most MaxSteadyingDegrees) that puts the shoulder that
+        // filtered distance from the goal, weighed by how much of the shoulder's arc changes that distance (SteadyingEfficiency);
+        // then the arm is solved again, exactly. Runs every frame of the continuous solve, so that the filter has the history.
+        private LimbResult Steady(SkeletonPose pose, LimbChain arm, Shoulder shoulder, LimbReachFilter filter, in LimbTarget target,
+            Quaternion frameRotation, Quaternion clavicleInFrame, LimbResult result, float deltaSeconds)
+        {
+            if (!(_straightArmCutoffHz > 0f) || !Vectors.IsFinite(target.Goal.Position)) return result;
+            RigidPose[] w = pose.World;
+            Vector3 root = w[arm.Root].Position, goal = target.Goal.Position;
+            float distance = Vector3.Distance(root, goal);
+            float wanted = filter.Filter(distance, deltaSeconds, _straightArmCutoffHz);
+            if (!result.Reached || wanted == distance) return result;
+            float theta = SteadyingTurn(w[shoulder.Clavicle].Position, root, goal, wanted, out Vector3 axis);
+            if (theta == 0f) return result;
+            Quaternion turn = Quaternion.CreateFromAxisAngle(axis, theta);
+            Quaternion steadied = Quaternion.Normalize(Quaternion.Conjugate(frameRotation) * turn * frameRotation * clavicleInFrame);
+            if (!Rotations.IsFinite(steadied)) return result;
+            // Within the shoulder's range, as the shrug is: a clavicle at its limit is not turned past it.
+            float angle = Rotations.AngleDegrees(Quaternion.Identity, steadied);
+            if (angle > MaxClavicleDegrees && angle > Rotations.AngleDegrees(Quaternion.Identity, clavicleInFrame))
+                steadied = Quaternion.Normalize(Quaternion.Slerp(Quaternion.Identity, steadied, MaxClavicleDegrees / angle));
+            shoulder.Set(pose, frameRotation, Quaternion.Normalize(steadied * shoulder.Reference));
             return TwoBoneIk.Solve(pose, arm, target.Goal, target.Hint);
+        }
+
+        // The clavicle's turn about `axis` (positive: the shoulder toward the goal) that puts the shoulder `wanted` from the
+        // goal, by the law of cosines in the plane of pivot, shoulder and goal, at most MaxSteadyingDegrees either way, and
+        // weighed by the share of the shoulder's move along its arc that changes its distance from the goal: none below
+        // SteadyingNoEfficiency (an arm along the clavicle: the shoulder would move sideways by far more than the distance
+        // changes), all from SteadyingFullEfficiency (the shoulder moves at most twice what the distance changes), smoothly.
+        private static float SteadyingTurn(Vector3 pivot, Vector3 shoulder, Vector3 goal, float wanted, out Vector3 axis)
+        {
+            Vector3 toShoulder = shoulder - pivot, toGoal = goal - pivot, fromGoal = shoulder - goal;
+            float c = toShoulder.Length(), d = toGoal.Length(), distance = fromGoal.Length();
+            axis = Vector3.Cross(toShoulder, toGoal);
+            if (!(c > 1e-6f) || !(d > 1e-6f) || !(distance > 1e-6f) || !(axis.LengthSquared() > 1e-14f)) return 0f;
+            axis = Vector3.Normalize(axis);
+            Vector3 along = Vector3.Normalize(Vector3.Cross(axis, toShoulder)); // the shoulder's way on its arc
+            float efficiency = Math.Abs(Vector3.Dot(along, fromGoal / distance));
+            float weight = Math.Clamp((efficiency - SteadyingNoEfficiency) / (SteadyingFullEfficiency - SteadyingNoEfficiency), 0f, 1f);
+            if (weight == 0f) return 0f;
+            weight = weight * weight * (3f - 2f * weight);
+            float alpha = MathF.Acos(Math.Clamp(Vector3.Dot(toShoulder, toGoal) / (c * d), -1f, 1f));
+            float beta = MathF.Acos(Math.Clamp((c * c + d * d - wanted * wanted) / (2f * c * d), -1f, 1f));
+            const float max = MaxSteadyingDegrees * MathF.PI / 180f;
+            return weight * Math.Clamp(alpha - beta, -max, max);
         }
 
         // The joint `self` (unless -1), each of the others (-1: none) and every joint above them, each once, parents first.

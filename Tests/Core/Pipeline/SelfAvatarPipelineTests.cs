@@ -294,6 +294,9 @@ namespace AvatarGo.Core.Tests
             // different samples of a wearer who sways, so the offsets (and the elbow) may differ by a little more: 2.47 mm on
             // one frame since the back's flexion starts 0.01 rad forward, where the spine differs by 2-7 micrometres and the
             // shoulder by 1.06 mm (the elbow's p99 0.083 mm, as before; the chest's largest difference 0.75 mm, 0.91 before).
+            // The straight limbs' filters follow time, but a One Euro step of 1/72 s is not two of 1/144 s: with the straight
+            // arm's steadying (session 14) the restored run's largest elbow difference went 1.12 -> 1.75 mm (the calibrated
+            // runs' 2.47 -> 1.74 mm); the filter's own test puts the same slow reach's elbow 0.49 mm apart at 45 and 180 Hz.
             var sessions = new Dictionary<int, string>();
             foreach (int rate in new[] { 72, 144 })
                 sessions[rate] = Sessions.Simulate("mocapbank_30fps.bvh", new SimulationOptions { Rate = rate, PositionNoise = 0, RotationNoiseDegrees = 0, Seed = 3 });
@@ -302,7 +305,7 @@ namespace AvatarGo.Core.Tests
 
             (float restored, _) = Difference(rate => Replay(sessions[rate], profile, 0f, HumanoidBone.LeftLowerArm));
             (float calibrated, _) = Difference(rate => Replay(sessions[rate], null, 0f, HumanoidBone.LeftLowerArm));
-            Assert.That(restored, Is.LessThanOrEqualTo(0.0015f), "one calibration: left elbow, largest difference (m)");
+            Assert.That(restored, Is.LessThanOrEqualTo(0.0022f), "one calibration: left elbow, largest difference (m)");
             Assert.That(calibrated, Is.LessThanOrEqualTo(0.003f), "calibrated at each rate: left elbow, largest difference (m)");
 
             // Held shrugs are released over seconds at any rate, but what each one holds is the shrug of the frame that

@@ -3,16 +3,17 @@ using System;
 namespace AvatarGo.Core
 {
     /// <summary>
-    /// Steadies a leg held straight. Near full reach the knee's distance from the hip-to-ankle line grows with the square
-    /// root of the slack (reach − distance), so the devices' noise in that distance (1.4 mm with 1 mm devices) moves a
-    /// straight knee by centimetres a frame where the wearer's hardly moves. The leg bends for this distance instead: the
-    /// hip-to-ankle distance through a One Euro filter (a cutoff that rises with the distance's speed, so a leg that bends
-    /// or straightens lags little), used in full at and beyond full reach and blending to the distance itself at
-    /// <see cref="GateOfReach"/> of the reach short of it, where the knee moves no more than 2.2 times the distance's change;
-    /// and a soft reach (<see cref="SoftZoneOfReach"/>) so that what noise the filter leaves cannot swing a knee at full
-    /// reach, where the knee's slope has no bound. Time-based (frame-rate independent); allocation-free.
+    /// Steadies a limb held straight. Near full reach the middle joint's distance from the root-to-end line grows with the
+    /// square root of the slack (reach − distance), so the devices' noise in that distance (1.4 mm with 1 mm devices) moves
+    /// a straight knee or elbow by centimetres a frame where the wearer's hardly moves. The limb bends for this distance
+    /// instead: the root-to-end distance through a One Euro filter (a cutoff that rises with the distance's speed, so a limb
+    /// that bends or straightens lags little), used in full at and beyond full reach and blending to the distance itself at
+    /// <see cref="GateOfReach"/> of the reach short of it, where the middle joint moves no more than 2.2 times the distance's
+    /// change; and a soft reach (<see cref="SoftZoneOfReach"/>) so that what noise the filter leaves cannot swing a middle
+    /// joint at full reach, where its slope has no bound. A leg's foot lands at the filtered distance; an arm's clavicle takes
+    /// up the difference (<see cref="FullBodyIk.StraightArmCutoffHz"/>). Time-based (frame-rate independent); allocation-free.
     /// </summary>
-    internal sealed class LegReachFilter
+    internal sealed class LimbReachFilter
     {
         /// <summary>How fast the cutoff rises with the distance's speed: Hz per m/s (the One Euro filter's beta).</summary>
         private const float SpeedGain = 20f;
@@ -21,14 +22,14 @@ namespace AvatarGo.Core
         private const float SpeedCutoffHz = 1f;
 
         /// <summary>
-        /// Where the filter fades out, as a share of the leg's reach (1/40: 22 mm for a 0.9 m leg): for two bones of length l
-        /// the knee lies about sqrt(l s) off the line at slack s, so it moves sqrt(l / s) / 2 times as far as the slack
-        /// changes, 2.2 times at s = l / 20, and more the straighter the leg.
+        /// Where the filter fades out, as a share of the limb's reach (1/40: 22 mm for a 0.9 m leg): for two bones of length l
+        /// the middle joint lies about sqrt(l s) off the line at slack s, so it moves sqrt(l / s) / 2 times as far as the slack
+        /// changes, 2.2 times at s = l / 20, and more the straighter the limb.
         /// </summary>
         private const float GateOfReach = 1f / 40f;
 
         /// <summary>
-        /// The soft reach's zone either side of full reach, as a share of the leg's reach (1/450: 2 mm for a 0.9 m leg, a few
+        /// The soft reach's zone either side of full reach, as a share of the limb's reach (1/450: 2 mm for a 0.9 m leg, a few
         /// times the filtered distance's own noise, 0.3–0.5 mm with 1 mm devices; a share, so that it bends every straight
         /// leg by the same angle whatever the body's size): the knee then moves at most sqrt(l / S) / 2 times the distance's
         /// change (7.5 times for 0.45 m bones, against 21 times at 1 mm of slack and without bound at none), and a leg held
@@ -39,19 +40,19 @@ namespace AvatarGo.Core
         /// <summary>The longest time one step filters over (s): a longer pause is filtered as if it were that long.</summary>
         private const float MaxStepSeconds = 0.25f;
 
-        private readonly float _reach;              // the leg's full reach: thigh + shin
+        private readonly float _reach;              // the limb's full reach: its two bones' lengths
         private bool _has;
         private float _value, _raw, _speed;
 
-        /// <summary>A filter for a leg whose thigh and shin together are <paramref name="reach"/> long (metres).</summary>
-        public LegReachFilter(float reach) => _reach = reach;
+        /// <summary>A filter for a limb whose two bones together are <paramref name="reach"/> long (metres).</summary>
+        public LimbReachFilter(float reach) => _reach = reach;
 
-        /// <summary>Forgets the history (the foot was lost, or the solve starts over): the next distance is taken as it is.</summary>
+        /// <summary>Forgets the history (the end was lost, or the solve starts over): the next distance is taken as it is.</summary>
         public void Reset() => _has = false;
 
         /// <summary>
-        /// The distance the leg is to bend for, this frame <paramref name="deltaSeconds"/> after the previous one (0: a
-        /// repeated frame, which filters nothing) with cutoff <paramref name="cutoffHz"/> for a still leg. A distance that is
+        /// The distance the limb is to bend for, this frame <paramref name="deltaSeconds"/> after the previous one (0: a
+        /// repeated frame, which filters nothing) with cutoff <paramref name="cutoffHz"/> for a still limb. A distance that is
         /// not finite (or a reach that is not finite and positive) is returned as it is and leaves the history alone.
         /// </summary>
         public float Filter(float distance, float deltaSeconds, float cutoffHz)
@@ -75,13 +76,12 @@ namespace AvatarGo.Core
             _raw = distance;
             float weight = Math.Max(0f, Math.Min(1f, 1f - (reach - distance) / (reach * GateOfReach)));
             float used = distance + weight * (_value - distance);
-            // The soft reach: within S of full reach the slack s becomes (s + S)² / 4S, so the knee's slope stays finite
+            // The soft reach: within S of full reach the slack s becomes (s + S)² / 4S, so the middle joint's slope stays finite
             // there (its offset grew as the square root of the slack) and the filter's residual noise cannot swing it by
             // centimetres; 0 from S beyond full reach on.
             float slack = reach - used, soft = reach * SoftZoneOfReach;
             if (slack < soft) used = reach - (slack > -soft ? (slack + soft) * (slack + soft) / (4f * soft) : 0f);
             return used;
         }
-
     }
 }
