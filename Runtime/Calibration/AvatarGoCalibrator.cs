@@ -83,6 +83,11 @@ namespace AvatarGo
             "HMD together (1.4 mm for two 1 mm devices). Larger steadies the chest and ignores small real bends; 0 flexes for every change. Read when the pipeline is made.")]
         private float m_SpineChordNoiseMetres = 0.0014f; // FullBodyIk.DefaultChordNoiseMetres
 
+        [SerializeField, Range(0f, 10f), Tooltip("The cutoff (Hz) of the filter on the hips-to-head distance the back bends for: near a straight back that distance changes " +
+            "with the square of the bend, so tracker noise flexed the back to and fro and the chest jittered. Lower is steadier and lags more in a quick bow (the head " +
+            "stays on the HMD either way). 0: off. Read when the pipeline is made.")]
+        private float m_SpineChordCutoffHz = 1f; // FullBodyIk.DefaultChordCutoffHz
+
         [SerializeField, Tooltip("On start, reuse the calibration saved for this avatar when the same devices (by serial) are connected.")]
         private bool m_RestoreSavedProfile = true;
 
@@ -184,6 +189,9 @@ namespace AvatarGo
 
         /// <summary>The hips-to-head change the back does not flex for (m, clamped to 0…0.02, NaN gives the default 0.0014; <c>PipelineSettings.SpineChordNoiseMetres</c>); read when the pipeline is made.</summary>
         public float SpineChordNoiseMetres { get => m_SpineChordNoiseMetres; set => m_SpineChordNoiseMetres = float.IsNaN(value) ? FullBodyIk.DefaultChordNoiseMetres : Math.Min(0.02f, Math.Max(0f, value)); }
+
+        /// <summary>The back's chord filter cutoff (Hz, clamped to 0…10, NaN gives the default 1; 0 turns it off; <c>PipelineSettings.SpineChordCutoffHz</c>); read when the pipeline is made.</summary>
+        public float SpineChordCutoffHz { get => m_SpineChordCutoffHz; set => m_SpineChordCutoffHz = float.IsNaN(value) ? FullBodyIk.DefaultChordCutoffHz : Math.Min(10f, Math.Max(0f, value)); }
 
         /// <summary>Whether each new calibration is followed by the refinement exercise (<see cref="Refinement"/>); read when a calibration completes.</summary>
         public bool RefinesAfterCalibration { get => m_RefineAfterCalibration; set => m_RefineAfterCalibration = value; }
@@ -476,6 +484,7 @@ namespace AvatarGo
             settings.StraightLegCutoffHz = m_StraightLegCutoffHz >= 0f && m_StraightLegCutoffHz <= 10f ? m_StraightLegCutoffHz : FullBodyIk.DefaultStraightLegCutoffHz;
             settings.StraightArmCutoffHz = m_StraightArmCutoffHz >= 0f && m_StraightArmCutoffHz <= 10f ? m_StraightArmCutoffHz : FullBodyIk.DefaultStraightArmCutoffHz;
             settings.SpineChordNoiseMetres = m_SpineChordNoiseMetres >= 0f && m_SpineChordNoiseMetres <= 0.02f ? m_SpineChordNoiseMetres : FullBodyIk.DefaultChordNoiseMetres;
+            settings.SpineChordCutoffHz = m_SpineChordCutoffHz >= 0f && m_SpineChordCutoffHz <= 10f ? m_SpineChordCutoffHz : FullBodyIk.DefaultChordCutoffHz;
             settings.Calibration.Proportions.Mode = m_ScaleMode;
             settings.Calibration.SpineJointsAsBound = SpineJointsAsBound;
             if (_fingers != null) _fingers.ConfigureHands(settings);

@@ -58,6 +58,21 @@ namespace AvatarGo.Core
                 : throw new ArgumentOutOfRangeException(nameof(value), value, "The spine's chord noise must be 0 or more metres.");
         }
 
+        private float _spineChordCutoffHz = FullBodyIk.DefaultChordCutoffHz;
+
+        /// <summary>
+        /// The cutoff (Hz, <see cref="FullBodyIk.DefaultChordCutoffHz"/>; 0 turns it off) of the filter on the hips-to-head
+        /// distance the back bends for, which steadies the chest against the devices' noise;
+        /// <see cref="FullBodyIk.ChordCutoffHz"/>. Read when calibration completes.
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
+        public float SpineChordCutoffHz
+        {
+            get => _spineChordCutoffHz;
+            set => _spineChordCutoffHz = value >= 0f && !float.IsInfinity(value) ? value
+                : throw new ArgumentOutOfRangeException(nameof(value), value, "The spine chord's cutoff must be 0 or more Hz.");
+        }
+
         private float _straightLegCutoffHz = FullBodyIk.DefaultStraightLegCutoffHz;
 
         /// <summary>

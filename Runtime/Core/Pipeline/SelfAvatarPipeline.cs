@@ -342,6 +342,7 @@ namespace AvatarGo.Core
             }
             _ik.ShrugReleaseSeconds = Settings.ShrugReleaseSeconds;
             _ik.ChordNoiseMetres = Settings.SpineChordNoiseMetres;
+            _ik.ChordCutoffHz = Settings.SpineChordCutoffHz;
             _ik.StraightLegCutoffHz = Settings.StraightLegCutoffHz;
             _ik.StraightArmCutoffHz = Settings.StraightArmCutoffHz;
             TrackingSettings tracking = Settings.Tracking;

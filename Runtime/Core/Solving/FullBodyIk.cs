@@ -111,6 +111,36 @@ namespace AvatarGo.Core
             }
         }
 
+        // The back's chords (the first spine joint to the head, and to the neck for the second solve) through their filters.
+        private readonly DistanceFilter _headChord = new DistanceFilter(), _neckChord = new DistanceFilter();
+        private float _chordCutoffHz = DefaultChordCutoffHz;
+
+        /// <summary>The default <see cref="ChordCutoffHz"/>: 1 Hz.</summary>
+        public const float DefaultChordCutoffHz = 1f;
+
+        /// <summary>
+        /// The cutoff (Hz, for a still back; <see cref="DefaultChordCutoffHz"/>) of the filter on the distance the back bends
+        /// for. Near a straight back the hips-to-head distance changes with the square of the flexion, so the devices' noise
+        /// in it (about 2–3 mm between the pelvis tracker's and the HMD's joints) flexed the back to and fro, the chest
+        /// moving by a centimetre or more a frame where the hips and head moved 3–4 mm; <see cref="ChordNoiseMetres"/> only
+        /// damps it. Each frame the back bends for that distance (and the neck's) through a One Euro filter, its cutoff rising
+        /// 20 Hz per m/s of the distance's speed, so a bow lags little; the head stays on its target (the aim and the
+        /// polish after the flexion). Only the frame-by-frame <see cref="Solve(in BodyTargets, SkeletonPose, float)"/>
+        /// filters; a lost head restarts it; 0 turns it off. See Documentation~/solver.md ("The back's flexion").
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
+        public float ChordCutoffHz
+        {
+            get => _chordCutoffHz;
+            set
+            {
+                if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The chord's cutoff must be 0 or more Hz.");
+                _chordCutoffHz = value;
+                _headChord.Reset();
+                _neckChord.Reset();
+            }
+        }
+
         private readonly LimbReachFilter _leftLegReach, _rightLegReach, _leftArmReach, _rightArmReach;
         private float _straightLegCutoffHz = DefaultStraightLegCutoffHz;
 
@@ -292,11 +322,12 @@ namespace AvatarGo.Core
             if (targets.HipsActive && targets.Hips.IsValid) pose.SetWorldPose(_hips, targets.Hips);
             pose.UpdateWorld(_beforeSpineAndLegs);
 
+            bool chordFiltered = continuous && _chordCutoffHz > 0f;
             if (targets.HeadActive && targets.Head.IsValid)
             {
                 if (_spine.Length > 0)
                 {
-                    SolveSpine(pose, targets.SpineBend, targets.Head, false, default);
+                    SolveSpine(pose, targets.SpineBend, targets.Head, false, default, chordFiltered ? _headChord : null, deltaSeconds);
                     if (_neck >= 0)
                     {
                         // The neck part of the way to where it would be if it turned with the head; then the spine
@@ -304,11 +335,18 @@ namespace AvatarGo.Core
                         Vector3 bent = w[_neck].Position, followed = targets.Head.TransformPoint(_neckInHead);
                         Vector3 toNeck = Vector3.Lerp(bent, followed, NeckFollowsHead) - targets.Head.Position;
                         if (toNeck.LengthSquared() > 1e-12f)
-                            SolveSpine(pose, targets.SpineBend, targets.Head, true, targets.Head.Position + Vector3.Normalize(toNeck) * _neckInHead.Length());
+                            SolveSpine(pose, targets.SpineBend, targets.Head, true, targets.Head.Position + Vector3.Normalize(toNeck) * _neckInHead.Length(),
+                                chordFiltered ? _neckChord : null, deltaSeconds);
                     }
                 }
                 report.HeadDistanceLeft = Vector3.Distance(w[_head].Position, targets.Head.Position);
                 pose.SetWorldRotation(_head, targets.Head.Rotation);
+            }
+            if (!chordFiltered || !targets.HeadActive || !targets.Head.IsValid)
+            {
+                // Without a head (or a frame that does not filter) the chords' history is stale by the time it comes back.
+                _headChord.Reset();
+                _neckChord.Reset();
             }
             pose.UpdateWorld(_beforeLimbs);
 
@@ -334,7 +372,7 @@ namespace AvatarGo.Core
         // hip line, on top of its reference rotation (a smooth curve rather than a fold at one joint); φ by one-variable
         // Levenberg–Marquardt on (chord − wanted)² + λ²φ² (the chord: the first spine joint to the end joint); then one swing at
         // the first spine joint aims the end joint at its target.
-        private void SolveSpine(SkeletonPose pose, Quaternion spineBend, RigidPose head, bool toNeck, Vector3 neckTarget)
+        private void SolveSpine(SkeletonPose pose, Quaternion spineBend, RigidPose head, bool toNeck, Vector3 neckTarget, DistanceFilter chordFilter, float deltaSeconds)
         {
             RigidPose[] w = pose.World;
             Vector3 headTarget = head.Position;
@@ -359,6 +397,11 @@ namespace AvatarGo.Core
             Vector3 flexAxis = Vector3.Transform(_hipLineInHips, w[_hips].Rotation);
             Vector3 origin = w[_spine[0]].Position;
             float wanted = Vector3.Distance(origin, endTarget);
+            // Frame by frame the back bends for the distance through its filter (ChordCutoffHz), and the end is left what
+            // the filter took out short or long of its target: the polish below does not take it up again.
+            float filtered = chordFilter != null ? chordFilter.Filter(wanted, deltaSeconds, _chordCutoffHz) : wanted;
+            float filterShift = Math.Abs(filtered - wanted);
+            wanted = filtered;
 
             // The second solve (to the neck) starts from the first's answer: the joints below the neck bend about as much; the
             // first starts FirstFlex forward of the straight back, which the bend's share may have arched (its turn about the
@@ -409,10 +452,10 @@ namespace AvatarGo.Core
             }
             // What the one-axis curve cannot reach (a target that needs the back's reference curve undone in another
             // plane) is polished by cyclic coordinate descent, top joint first.
-            // Not what the back's stiffness leaves on purpose, up to about the chord noise (polishing that away would flex
-            // the back by the noise again). The neck's second solve leaves more (the whole spine's λ on a shorter chain), and
+            // Not what the back's stiffness leaves on purpose, up to about the chord noise, nor what the chord's filter took out
+            // (polishing either away would flex the back by the noise again, the top joints and the shoulders with it). The neck's second solve leaves more (the whole spine's λ on a shorter chain), and
             // that is polished: on the shared clips in most frames, all four passes (Documentation~/solver.md).
-            float polishBeyond = SpineTolerance + _chordNoiseMetres;
+            float polishBeyond = SpineTolerance + _chordNoiseMetres + filterShift;
             for (int pass = 0; pass < SpinePolishPasses && Vector3.Distance(w[_head].Position, headTarget) > polishBeyond; pass++)
                 for (int i = _spine.Length - 1; i >= 0; i--)
                 {
@@ -483,7 +526,7 @@ namespace AvatarGo.Core
             return k2 > 0.0 && double.IsFinite(k2) ? (float)k2 : 0f;
         }
 
-        // A leg; frame by frame (continuous), held straight, it bends for its filtered hip-to-ankle distance (LegReachFilter):
+        // A leg; frame by frame (continuous), held straight, it bends for its filtered hip-to-ankle distance (LimbReachFilter):
         // the goal moved along the hip-to-goal line to that distance, its rotation kept. A lost foot restarts the filter.
         private LimbResult SolveLeg(SkeletonPose pose, LimbChain leg, LimbReachFilter filter, in LimbTarget target, bool continuous, float deltaSeconds)
         {

@@ -6,21 +6,15 @@ namespace AvatarGo.Core
     /// Steadies a limb held straight. Near full reach the middle joint's distance from the root-to-end line grows with the
     /// square root of the slack (reach − distance), so the devices' noise in that distance (1.4 mm with 1 mm devices) moves
     /// a straight knee or elbow by centimetres a frame where the wearer's hardly moves. The limb bends for this distance
-    /// instead: the root-to-end distance through a One Euro filter (a cutoff that rises with the distance's speed, so a limb
-    /// that bends or straightens lags little), used in full at and beyond full reach and blending to the distance itself at
-    /// <see cref="GateOfReach"/> of the reach short of it, where the middle joint moves no more than 2.2 times the distance's
-    /// change; and a soft reach (<see cref="SoftZoneOfReach"/>) so that what noise the filter leaves cannot swing a middle
+    /// instead: the root-to-end distance through a One Euro filter (<see cref="DistanceFilter"/>: a cutoff that rises with
+    /// the distance's speed, so a limb that bends or straightens lags little), used in full at and beyond full reach and
+    /// blending to the distance itself at <see cref="GateOfReach"/> of the reach short of it, where the middle joint moves
+    /// no more than 2.2 times the distance's change; and a soft reach (<see cref="SoftZoneOfReach"/>) so that what noise the filter leaves cannot swing a middle
     /// joint at full reach, where its slope has no bound. A leg's foot lands at the filtered distance; an arm's clavicle takes
     /// up the difference (<see cref="FullBodyIk.StraightArmCutoffHz"/>). Time-based (frame-rate independent); allocation-free.
     /// </summary>
     internal sealed class LimbReachFilter
     {
-        /// <summary>How fast the cutoff rises with the distance's speed: Hz per m/s (the One Euro filter's beta).</summary>
-        private const float SpeedGain = 20f;
-
-        /// <summary>The cutoff of the speed estimate (Hz).</summary>
-        private const float SpeedCutoffHz = 1f;
-
         /// <summary>
         /// Where the filter fades out, as a share of the limb's reach (1/40: 22 mm for a 0.9 m leg): for two bones of length l
         /// the middle joint lies about sqrt(l s) off the line at slack s, so it moves sqrt(l / s) / 2 times as far as the slack
@@ -37,18 +31,14 @@ namespace AvatarGo.Core
         /// </summary>
         private const float SoftZoneOfReach = 1f / 450f;
 
-        /// <summary>The longest time one step filters over (s): a longer pause is filtered as if it were that long.</summary>
-        private const float MaxStepSeconds = 0.25f;
-
         private readonly float _reach;              // the limb's full reach: its two bones' lengths
-        private bool _has;
-        private float _value, _raw, _speed;
+        private readonly DistanceFilter _distance = new DistanceFilter();
 
         /// <summary>A filter for a limb whose two bones together are <paramref name="reach"/> long (metres).</summary>
         public LimbReachFilter(float reach) => _reach = reach;
 
         /// <summary>Forgets the history (the end was lost, or the solve starts over): the next distance is taken as it is.</summary>
-        public void Reset() => _has = false;
+        public void Reset() => _distance.Reset();
 
         /// <summary>
         /// The distance the limb is to bend for, this frame <paramref name="deltaSeconds"/> after the previous one (0: a
@@ -59,23 +49,9 @@ namespace AvatarGo.Core
         {
             float reach = _reach;
             if (!(distance >= 0f && distance < float.PositiveInfinity && reach > 0f && reach < float.PositiveInfinity)) return distance;
-            if (!_has)
-            {
-                _has = true;
-                _value = _raw = distance;
-                _speed = 0f;
-                return distance;
-            }
-            if (deltaSeconds > 0f && deltaSeconds < float.PositiveInfinity)
-            {
-                float dt = Math.Min(deltaSeconds, MaxStepSeconds);
-                float speed = Math.Abs(distance - _raw) / dt;
-                _speed += OneEuroFilter.Alpha(SpeedCutoffHz, dt) * (speed - _speed);
-                _value += OneEuroFilter.Alpha(cutoffHz + SpeedGain * _speed, dt) * (distance - _value);
-            }
-            _raw = distance;
+            float filtered = _distance.Filter(distance, deltaSeconds, cutoffHz);
             float weight = Math.Max(0f, Math.Min(1f, 1f - (reach - distance) / (reach * GateOfReach)));
-            float used = distance + weight * (_value - distance);
+            float used = distance + weight * (filtered - distance);
             // The soft reach: within S of full reach the slack s becomes (s + S)² / 4S, so the middle joint's slope stays finite
             // there (its offset grew as the square root of the slack) and the filter's residual noise cannot swing it by
             // centimetres; 0 from S beyond full reach on.

@@ -85,6 +85,7 @@ public class PrefabGeneratorTests
         Assert.That(Field("m_StraightLegCutoffHz"), Is.EqualTo(AvatarGo.Core.FullBodyIk.DefaultStraightLegCutoffHz));
         Assert.That(Field("m_SpineChordNoiseMetres"), Is.EqualTo(AvatarGo.Core.FullBodyIk.DefaultChordNoiseMetres));
         Assert.That(Field("m_StraightArmCutoffHz"), Is.EqualTo(AvatarGo.Core.FullBodyIk.DefaultStraightArmCutoffHz));
+        Assert.That(Field("m_SpineChordCutoffHz"), Is.EqualTo(AvatarGo.Core.FullBodyIk.DefaultChordCutoffHz));
     }
 
     [Test]
