@@ -178,9 +178,10 @@ namespace AvatarGo.Core
 
         /// <summary>
         /// The cutoff (Hz, for a still arm; <see cref="DefaultStraightArmCutoffHz"/>) of the filter that steadies an arm held
-        /// straight, as <see cref="StraightLegCutoffHz"/> does a leg, without moving the hand off its goal: within 2.5 % of its
-        /// reach of full reach the clavicle turns (for this frame only, not held like the shrug) by the least angle, at most
-        /// 3°, that puts the shoulder the filtered distance from the hand's goal, and the arm is solved exactly from there, so
+        /// straight, as <see cref="StraightLegCutoffHz"/> does a leg, without moving the hand off its goal: within 5 % of its
+        /// reach of full reach (twice the leg's zone: the hand does not lag) the clavicle turns (for this frame only, not held
+        /// like the shrug) by the least angle, at most 3°, that puts the shoulder the filtered distance from the hand's goal,
+        /// and the arm is solved exactly from there, so
         /// the elbow bends for the filtered distance and the hand is where the exact solve puts it. The shoulder then moves by
         /// the noise the filter takes out (about a millimetre; at most twice that where the turn is used in full, the arm within
         /// 60° of the way the turn moves the shoulder), and the clavicle does nothing where the arm points along it (arms out
@@ -249,12 +250,12 @@ namespace AvatarGo.Core
             }
             _leftLeg = new LimbChain(s, map[HumanoidBone.LeftUpperLeg], map[HumanoidBone.LeftLowerLeg], map[HumanoidBone.LeftFoot]);
             _rightLeg = new LimbChain(s, map[HumanoidBone.RightUpperLeg], map[HumanoidBone.RightLowerLeg], map[HumanoidBone.RightFoot]);
-            _leftLegReach = new LimbReachFilter(Reach(refWorld, _leftLeg));
-            _rightLegReach = new LimbReachFilter(Reach(refWorld, _rightLeg));
+            _leftLegReach = new LimbReachFilter(Reach(refWorld, _leftLeg), LimbReachFilter.LegGateOfReach);
+            _rightLegReach = new LimbReachFilter(Reach(refWorld, _rightLeg), LimbReachFilter.LegGateOfReach);
             _leftArm = new LimbChain(s, map[HumanoidBone.LeftUpperArm], map[HumanoidBone.LeftLowerArm], map[HumanoidBone.LeftHand]);
             _rightArm = new LimbChain(s, map[HumanoidBone.RightUpperArm], map[HumanoidBone.RightLowerArm], map[HumanoidBone.RightHand]);
-            _leftArmReach = new LimbReachFilter(Reach(refWorld, _leftArm));
-            _rightArmReach = new LimbReachFilter(Reach(refWorld, _rightArm));
+            _leftArmReach = new LimbReachFilter(Reach(refWorld, _leftArm), LimbReachFilter.ArmGateOfReach);
+            _rightArmReach = new LimbReachFilter(Reach(refWorld, _rightArm), LimbReachFilter.ArmGateOfReach);
             Vector3 hipLine = Vectors.NormalizeOr(refWorld[_rightLeg.Root].Position - refWorld[_leftLeg.Root].Position, Vector3.UnitX);
             _hipLineInHips = Vector3.Normalize(Vector3.Transform(hipLine, Quaternion.Conjugate(refWorld[_hips].Rotation)));
             _chordCurvature = ChordCurvature(refWorld, hipLine);

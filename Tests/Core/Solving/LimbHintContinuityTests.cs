@@ -38,9 +38,10 @@ namespace AvatarGo.Core.Tests
                 Avatar = calibrator.ScaledAvatar;
                 CalibrationPose = calibrator.AvatarPose;
                 Mapper = new BodyTargetMapper(Profile, Wearer.Devices, Avatar, CalibrationPose, knees, ElbowHintModel.HandAxis);
-                // The hints alone: the straight leg's filter would carry each sweep's opening jump (from wherever the last
-                // sweep left the leg) into the frames after it (AStraightLegDoesNotShiverWithTheDevicesNoise tests it).
-                Ik = new FullBodyIk(Avatar, CalibrationPose) { StraightLegCutoffHz = 0f };
+                // The hints alone: the straight limbs' filters would carry each sweep's opening jump (from wherever the last
+                // sweep left the limb) into the frames after it (AStraightLegDoesNotShiverWithTheDevicesNoise and
+                // StraightArmTests test them).
+                Ik = new FullBodyIk(Avatar, CalibrationPose) { StraightLegCutoffHz = 0f, StraightArmCutoffHz = 0f };
                 Pose = new SkeletonPose(Avatar.Skeleton);
                 Pose.CopyFrom(CalibrationPose);
                 Wearer.Sample(Standing, 0f, 0f); // still standing in the T-pose of the walk-in
