@@ -48,20 +48,6 @@ namespace AvatarGo.Core.Tests
             }
         }
 
-        private static Func<Vector3> NoiseSource(int seed)
-        {
-            var random = new Random(seed);
-            float Gaussian() => (float)(Math.Sqrt(-2.0 * Math.Log(1.0 - random.NextDouble())) * Math.Cos(2.0 * Math.PI * random.NextDouble()));
-            return () => 0.001f * new Vector3(Gaussian(), Gaussian(), Gaussian());
-        }
-
-        private static float Percentile(float[] values, double q)
-        {
-            var sorted = (float[])values.Clone();
-            Array.Sort(sorted);
-            return sorted[Math.Min(sorted.Length - 1, (int)(q * sorted.Length))];
-        }
-
         /// <summary>
         /// A wearer standing still with the back a little bent (the head 1.5 cm lower than in the T-pose), 1 mm of noise per
         /// coordinate on the hips and the head, 90 Hz. Measured when written (MocapBank / Rigify): the chest's move a frame p95 /
@@ -82,7 +68,7 @@ namespace AvatarGo.Core.Tests
                 float cutoff = run == 0 ? FullBodyIk.DefaultChordCutoffHz : 0f;
                 var ik = new FullBodyIk(stage.Truth.Map, stage.Calibration) { ChordCutoffHz = cutoff };
                 var pose = new SkeletonPose(stage.Truth.Clip.Skeleton);
-                Func<Vector3> noise = NoiseSource(3);
+                Func<Vector3> noise = DeviceNoise.Source(3);
                 var chestMoves = new float[frames - 1];
                 var headLeft = new float[frames];
                 Vector3 lastChest = default;
@@ -95,9 +81,9 @@ namespace AvatarGo.Core.Tests
                     lastChest = chest;
                     headLeft[f] = report.HeadDistanceLeft * 1000f;
                 }
-                chestP95[run] = Percentile(chestMoves, 0.95);
-                chestMax[run] = Percentile(chestMoves, 1.0);
-                headP95[run] = Percentile(headLeft, 0.95);
+                chestP95[run] = DeviceNoise.Percentile(chestMoves, 0.95);
+                chestMax[run] = DeviceNoise.Percentile(chestMoves, 1.0);
+                headP95[run] = DeviceNoise.Percentile(headLeft, 0.95);
                 TestContext.WriteLine($"{clipName}, cutoff {cutoff} Hz: chest's move a frame p95 / max {chestP95[run]:F1} / {chestMax[run]:F1} mm; head from its target p95 {headP95[run]:F2} mm");
             }
             Assert.That(chestP95[1], Is.GreaterThan(2f * chestP95[0]), "unfiltered, the noise flexes the back (the chest's move a frame, p95): what the filter is for");

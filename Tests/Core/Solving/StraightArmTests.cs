@@ -56,20 +56,6 @@ namespace AvatarGo.Core.Tests
             }
         }
 
-        private static Func<Vector3> NoiseSource(int seed)
-        {
-            var random = new Random(seed);
-            float Gaussian() => (float)(Math.Sqrt(-2.0 * Math.Log(1.0 - random.NextDouble())) * Math.Cos(2.0 * Math.PI * random.NextDouble()));
-            return () => 0.001f * new Vector3(Gaussian(), Gaussian(), Gaussian());
-        }
-
-        private static float Percentile(float[] values, double q)
-        {
-            var sorted = (float[])values.Clone();
-            Array.Sort(sorted);
-            return sorted[Math.Min(sorted.Length - 1, (int)(q * sorted.Length))];
-        }
-
         /// <summary>
         /// An arm held straight forward with 1 mm of noise per coordinate on the hand's goal and the hips. Measured (MocapBank /
         /// Mixamo; since the chord's filter and the arm's 5 % zone): the elbow's move a frame p95 / max 18.5 / 27.4 and 19.2 /
@@ -96,7 +82,7 @@ namespace AvatarGo.Core.Tests
                 float cutoff = run == 0 ? FullBodyIk.DefaultStraightArmCutoffHz : 0f;
                 var ik = new FullBodyIk(stage.Truth.Map, stage.Calibration) { StraightArmCutoffHz = cutoff };
                 var pose = new SkeletonPose(stage.Truth.Clip.Skeleton);
-                Func<Vector3> noise = NoiseSource(5);
+                Func<Vector3> noise = DeviceNoise.Source(5);
                 var elbowMoves = new float[frames - 1];
                 var shoulderMoves = new float[frames - 1];
                 Vector3 lastElbow = default, lastShoulder = default;
@@ -118,10 +104,10 @@ namespace AvatarGo.Core.Tests
                         worstMiss[run] = Math.Max(worstMiss[run], Vector3.Distance(pose.World[stage.Hand].Position, targets.LeftHand.Goal.Position) * 1000f);
                     }
                 }
-                elbowP95[run] = Percentile(elbowMoves, 0.95);
-                elbowMax[run] = Percentile(elbowMoves, 1.0);
-                shoulderP95[run] = Percentile(shoulderMoves, 0.95);
-                shoulderMax[run] = Percentile(shoulderMoves, 1.0);
+                elbowP95[run] = DeviceNoise.Percentile(elbowMoves, 0.95);
+                elbowMax[run] = DeviceNoise.Percentile(elbowMoves, 1.0);
+                shoulderP95[run] = DeviceNoise.Percentile(shoulderMoves, 0.95);
+                shoulderMax[run] = DeviceNoise.Percentile(shoulderMoves, 1.0);
                 TestContext.WriteLine($"{clipName}, cutoff {cutoff} Hz: elbow's move a frame p95 / max {elbowP95[run]:F1} / {elbowMax[run]:F1} mm, " +
                                       $"shoulder's {shoulderP95[run]:F1} / {shoulderMax[run]:F1} mm; hand reached in {reachedFrames[run]} frames, at most {worstMiss[run]:F3} mm off");
             }
@@ -146,7 +132,7 @@ namespace AvatarGo.Core.Tests
             var steadied = new FullBodyIk(stage.Truth.Map, stage.Calibration);
             var plain = new FullBodyIk(stage.Truth.Map, stage.Calibration) { StraightArmCutoffHz = 0f };
             SkeletonPose a = new SkeletonPose(stage.Truth.Clip.Skeleton), b = new SkeletonPose(stage.Truth.Clip.Skeleton);
-            Func<Vector3> noise = NoiseSource(7);
+            Func<Vector3> noise = DeviceNoise.Source(7);
             float apart = 0f;
             for (int f = 0; f < 300; f++)
             {
