@@ -264,10 +264,11 @@ namespace AvatarGo.Core
             return this;
         }
 
+        // Doubles (the times) through RoundTripNumber: "R" does not round-trip every double on 64-bit .NET Framework.
         private SessionWriter Append(double v)
         {
             int written;
-            while (!v.TryFormat(_line.AsSpan(_length), out written, "R".AsSpan(), CultureInfo.InvariantCulture)) Ensure(_line.Length);
+            while (!RoundTripNumber.TryFormat(v, _line.AsSpan(_length), out written)) Ensure(_line.Length);
             _length += written;
             return this;
         }

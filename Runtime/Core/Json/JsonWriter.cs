@@ -47,7 +47,7 @@ namespace AvatarGo.Core
         {
             CheckFinite(value);
             Separator();
-            _sb.Append(value.ToString("R", CultureInfo.InvariantCulture));
+            _sb.Append(RoundTripNumber.Format(value));
             return this;
         }
 
