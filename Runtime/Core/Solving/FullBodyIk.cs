@@ -121,12 +121,14 @@ namespace AvatarGo.Core
         /// <summary>
         /// The cutoff (Hz, for a still back; <see cref="DefaultChordCutoffHz"/>) of the filter on the distance the back bends
         /// for. Near a straight back the hips-to-head distance changes with the square of the flexion, so the devices' noise
-        /// in it (about 2–3 mm between the pelvis tracker's and the HMD's joints) flexed the back to and fro, the chest
-        /// moving by a centimetre or more a frame where the hips and head moved 3–4 mm; <see cref="ChordNoiseMetres"/> only
-        /// damps it. Each frame the back bends for that distance (and the neck's) through a One Euro filter, its cutoff rising
-        /// 20 Hz per m/s of the distance's speed, so a bow lags little; the head stays on its target (the aim and the
-        /// polish after the flexion). Only the frame-by-frame <see cref="Solve(in BodyTargets, SkeletonPose, float)"/>
-        /// filters; a lost head restarts it; 0 turns it off. See Documentation~/solver.md ("The back's flexion").
+        /// in it (the pelvis tracker's and the HMD's, their turns on the levers to the joints included) flexed the back to
+        /// and fro, the chest moving by a centimetre or more a frame where the hips and head moved 3–4 mm;
+        /// <see cref="ChordNoiseMetres"/> only damps it. Each frame the back bends for that distance (and the neck's) through a One Euro filter, its cutoff rising
+        /// 20 Hz per m/s of the distance's speed, so a bow lags little; the head is left what the filter took out off its
+        /// target (a millimetre or two standing, up to about 4 mm more in a bow), which the polish does not take up (that
+        /// would swing the top joints and the shoulders by the noise). Only the frame-by-frame
+        /// <see cref="Solve(in BodyTargets, SkeletonPose, float)"/> filters; a lost head restarts it; 0 turns it off. See
+        /// Documentation~/solver.md ("The chord's filter").
         /// </summary>
         /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
         public float ChordCutoffHz
@@ -181,12 +183,12 @@ namespace AvatarGo.Core
         /// straight, as <see cref="StraightLegCutoffHz"/> does a leg, without moving the hand off its goal: within 5 % of its
         /// reach of full reach (twice the leg's zone: the hand does not lag) the clavicle turns (for this frame only, not held
         /// like the shrug) by the least angle, at most 3°, that puts the shoulder the filtered distance from the hand's goal,
-        /// and the arm is solved exactly from there, so
-        /// the elbow bends for the filtered distance and the hand is where the exact solve puts it. The shoulder then moves by
-        /// the noise the filter takes out (about a millimetre; at most twice that where the turn is used in full, the arm within
-        /// 60° of the way the turn moves the shoulder), and the clavicle does nothing where the arm points along it (arms out
-        /// sideways, as in the T-pose), whose elbow still shivers. Only the frame-by-frame <see cref="Solve(in BodyTargets, SkeletonPose, float)"/> steadies, and
-        /// only an arm with a clavicle; 0 turns it off. See Documentation~/solver.md ("A straight limb shivers").
+        /// and the arm is solved exactly from there, so the elbow bends for the filtered distance and the hand is where the
+        /// exact solve puts it. The shoulder then moves by the noise the filter takes out (about a millimetre; at most twice
+        /// that where the turn is used in full, the arm within 60° of the way the turn moves the shoulder), and the clavicle
+        /// does nothing where the arm points along it (arms out sideways, as in the T-pose), whose elbow still shivers. Only
+        /// the frame-by-frame <see cref="Solve(in BodyTargets, SkeletonPose, float)"/> steadies, and only an arm with a
+        /// clavicle; 0 turns it off. See Documentation~/solver.md ("A straight limb shivers").
         /// </summary>
         /// <exception cref="ArgumentOutOfRangeException">Negative, infinite or NaN.</exception>
         public float StraightArmCutoffHz
@@ -453,9 +455,10 @@ namespace AvatarGo.Core
             }
             // What the one-axis curve cannot reach (a target that needs the back's reference curve undone in another
             // plane) is polished by cyclic coordinate descent, top joint first.
-            // Not what the back's stiffness leaves on purpose, up to about the chord noise, nor what the chord's filter took out
-            // (polishing either away would flex the back by the noise again, the top joints and the shoulders with it). The neck's second solve leaves more (the whole spine's λ on a shorter chain), and
-            // that is polished: on the shared clips in most frames, all four passes (Documentation~/solver.md).
+            // Not what the back's stiffness leaves on purpose, up to about the chord noise, nor what the chord's filter took
+            // out (polishing either away would flex the back by the noise again, the top joints and the shoulders with it).
+            // The neck's second solve leaves more (the whole spine's λ on a shorter chain), and that is polished
+            // (Documentation~/solver.md).
             float polishBeyond = SpineTolerance + _chordNoiseMetres + filterShift;
             for (int pass = 0; pass < SpinePolishPasses && Vector3.Distance(w[_head].Position, headTarget) > polishBeyond; pass++)
                 for (int i = _spine.Length - 1; i >= 0; i--)
@@ -586,7 +589,7 @@ namespace AvatarGo.Core
 
         // An arm held straight (StraightArmCutoffHz): its shoulder-to-goal distance through the limb's filter, and the
         // clavicle turned, for this frame only, by the least angle (at most MaxSteadyingDegrees) that puts the shoulder that
-        // filtered distance from the goal, weighed by how much of the shoulder's arc changes that distance (SteadyingEfficiency);
+        // filtered distance from the goal, weighed by how much of the shoulder's arc changes that distance (SteadyingTurn);
         // then the arm is solved again, exactly. Runs every frame of the continuous solve, so that the filter has the history.
         private LimbResult Steady(SkeletonPose pose, LimbChain arm, Shoulder shoulder, LimbReachFilter filter, in LimbTarget target,
             Quaternion frameRotation, Quaternion clavicleInFrame, LimbResult result, float deltaSeconds)
