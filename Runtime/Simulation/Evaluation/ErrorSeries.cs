@@ -64,6 +64,15 @@ namespace AvatarGo.Simulation
             return _values[lo] + (_values[hi] - _values[lo]) * (p - lo);
         }
 
+        /// <summary>The share (0…1) of the samples above <paramref name="threshold"/>, or NaN with no samples.</summary>
+        public double ShareAbove(double threshold)
+        {
+            if (_values.Count == 0) return double.NaN;
+            int above = 0;
+            foreach (double v in _values) if (v > threshold) above++;
+            return (double)above / _values.Count;
+        }
+
         /// <summary>Adds every sample of another series.</summary>
         public void AddAll(ErrorSeries other)
         {

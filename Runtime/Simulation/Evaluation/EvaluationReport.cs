@@ -37,6 +37,32 @@ namespace AvatarGo.Simulation
         /// <summary>Rotation error of the end effectors (change since calibration, avatar vs wearer), in degrees.</summary>
         public ErrorSeries EndEffectorDegrees { get; } = new ErrorSeries();
 
+        /// <summary>
+        /// Per joint (not the fingers), how much further the avatar's joint moved from one compared frame to the next than the
+        /// wearer's did (mm; negative where it moved less): its jitter and pops beyond the motion. Frames not compared (the
+        /// refinement exercise) break the sequence.
+        /// </summary>
+        public Dictionary<HumanoidBone, ErrorSeries> JointMoveBeyondWearerMm { get; } = new Dictionary<HumanoidBone, ErrorSeries>();
+
+        /// <summary>The move beyond the wearer's (<see cref="JointMoveBeyondWearerMm"/>) counted as a jump: 10 mm in one frame.</summary>
+        public const double JumpMm = 10.0;
+
+        /// <summary>
+        /// The mean over the joints of their <see cref="JointMoveBeyondWearerMm"/> 95th percentile (mm): one figure for how
+        /// steady the avatar is beyond the wearer's own motion; NaN before two compared frames.
+        /// </summary>
+        public double JitterMm
+        {
+            get
+            {
+                double sum = 0;
+                int n = 0;
+                foreach (ErrorSeries s in JointMoveBeyondWearerMm.Values)
+                    if (s.Count > 0) { sum += s.P95; n++; }
+                return n == 0 ? double.NaN : sum / n;
+            }
+        }
+
         /// <summary>Difference of the knee's interior angle, avatar vs wearer, in degrees.</summary>
         public ErrorSeries KneeAngleDegrees { get; } = new ErrorSeries();
 

@@ -67,6 +67,9 @@ namespace AvatarGo.Simulation
             var avatarAtCalibration = new RigidPose[HumanoidBones.Count];
             var hasReference = new bool[HumanoidBones.Count]; // a bone's truth may be absent at calibration: its first frame with it
             bool calibrated = false;
+            var lastAvatar = new Vector3[HumanoidBones.Count];
+            var lastTruth = new Vector3[HumanoidBones.Count];
+            var hasLast = new bool[HumanoidBones.Count]; // the bone was compared on the frame before (its move is measured)
             DisturbanceTracker disturbed = null;
             if (header.TruthHumanoid != null) report.TrueMeasurements = ProportionFitter.MeasureSkeleton(header.TruthHumanoid);
             var armLength = new double[2];
@@ -109,6 +112,7 @@ namespace AvatarGo.Simulation
                 if (frame.Time < exerciseEnd)
                 {
                     report.ExerciseFrames++;
+                    Array.Clear(hasLast, 0, hasLast.Length);
                     continue;
                 }
                 if (!double.IsNaN(exerciseEnd) && !exerciseOver)
@@ -123,6 +127,7 @@ namespace AvatarGo.Simulation
                         report.AvatarMeasurements = ProportionFitter.MeasureSkeleton(scaled);
                         report.Profile = pipeline.ActiveProfile;
                     }
+                    Array.Clear(hasLast, 0, hasLast.Length);
                     continue;
                 }
                 SkeletonPose pose = pipeline.Pose;
@@ -134,9 +139,21 @@ namespace AvatarGo.Simulation
                 for (int b = 0; b < HumanoidBones.Count; b++)
                 {
                     var bone = (HumanoidBone)b;
-                    if (!frame.HasTruth[b] || !scaled.Has(bone) || HumanoidBones.IsFinger(bone)) continue;
+                    if (!frame.HasTruth[b] || !scaled.Has(bone) || HumanoidBones.IsFinger(bone))
+                    {
+                        hasLast[b] = false;
+                        continue;
+                    }
                     RigidPose a = pose.World[scaled[bone]];
                     RigidPose t = frame.Truth[b];
+                    if (hasLast[b])
+                    {
+                        if (!report.JointMoveBeyondWearerMm.TryGetValue(bone, out ErrorSeries moves)) report.JointMoveBeyondWearerMm[bone] = moves = new ErrorSeries();
+                        moves.Add((Vector3.Distance(a.Position, lastAvatar[b]) - (double)Vector3.Distance(t.Position, lastTruth[b])) * 1000.0);
+                    }
+                    lastAvatar[b] = a.Position;
+                    lastTruth[b] = t.Position;
+                    hasLast[b] = true;
                     double mm = Vector3.Distance(a.Position, t.Position) * 1000.0;
                     if (!report.JointPositionMm.TryGetValue(bone, out ErrorSeries series)) report.JointPositionMm[bone] = series = new ErrorSeries();
                     series.Add(mm);

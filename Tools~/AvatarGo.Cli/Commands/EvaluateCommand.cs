@@ -25,8 +25,10 @@ public sealed class EvaluateCommand : ICommand
         per joint and for end effectors (hips, head, hands, feet), mid joints (elbows, knees) and all
         joints but the finger bones (MPJPE: the mean over those), the median, mean, 95th percentile and
         maximum position error in mm; end-effector rotation
-        error and knee angle error in degrees; and, for an avatar with finger bones, the fingers on the
-        solved body: the deepest penetration of the controller and each fingertip's gap (mm).
+        error and knee angle error in degrees; the steadiness: how much further each joint moved from one
+        frame to the next than the wearer's (p95, max and the share of jumps over 10 mm; JSON: per joint
+        and "jitter_mm", the joints' p95 on average); and, for an avatar with finger bones, the fingers on
+        the solved body: the deepest penetration of the controller and each fingertip's gap (mm).
           --mode exact|fixed   exact offsets (the paper's method, default) or fixed offsets (its baseline)
           --controller NAME    the controller in both hands (Runtime/ControllerProfiles; default vive-wand,
                                as 'simulate' holds by default); none: no finger IK
@@ -267,6 +269,7 @@ public sealed class EvaluateCommand : ICommand
             Row(o, "  undisturbed (mm)", d.UndisturbedMm);
         }
         PrintBendPlanes(r, o);
+        PrintSteadiness(r, o);
         PrintProportions(r, o);
         if (r.Fingers == null) return;
         o.WriteLine(string.Create(inv, $"fingers on the solved body ({r.Fingers.Frames} frames, {r.Fingers.OpenHandFrames} hand-frames open): deepest penetration {r.Fingers.MaxPenetrationMm:0.00} mm"));
@@ -369,6 +372,18 @@ public sealed class EvaluateCommand : ICommand
                 $"  {b.Joint,-18} {b.AbsoluteDegrees.Median,8:0.0} {b.AbsoluteDegrees.P95,8:0.0} {b.AbsoluteDegrees.Max,8:0.0}  {b.FlippedShare * 100,8:0.00} %      {b.SignedDegrees.Median,8:0.0}  {b.StraightFrames,8}"));
     }
 
+    private static ErrorSeries MoveBeyond(EvaluationReport r, HumanoidBone bone) => r.JointMoveBeyondWearerMm.TryGetValue(bone, out ErrorSeries s) && s.Count > 0 ? s : null;
+
+    // How much further than the wearer's the knees, elbows, chest and head moved a frame, and every joint's mean p95.
+    internal static void PrintSteadiness(EvaluationReport r, TextWriter o)
+    {
+        var inv = CultureInfo.InvariantCulture;
+        o.WriteLine(string.Create(inv, $"steadiness: a joint's move a frame beyond the wearer's (mm), p95 / max and jumps over {EvaluationReport.JumpMm:0} mm; every joint's p95 on average {r.JitterMm:0.00} mm"));
+        foreach (HumanoidBone bone in new[] { HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg, HumanoidBone.LeftLowerArm, HumanoidBone.RightLowerArm, HumanoidBone.Chest, HumanoidBone.Head })
+            if (r.JointMoveBeyondWearerMm.TryGetValue(bone, out ErrorSeries s) && s.Count > 0)
+                o.WriteLine(string.Create(inv, $"  {bone,-18} {s.P95,8:0.0} {s.Max,8:0.0}  {s.ShareAbove(EvaluationReport.JumpMm) * 100,6:0.0} %"));
+    }
+
     internal static object BendPlanesJson(EvaluationReport r) => r.BendPlanes.ToDictionary(b => b.Joint.ToString(), b => new
     {
         median_deg = OrNull(b.AbsoluteDegrees.Median),
@@ -405,7 +420,13 @@ public sealed class EvaluateCommand : ICommand
             non_finite_joint_errors = r.AllJointsMm.InvalidCount,
             proportions = ProportionsJson(r),
             role_swaps = r.RoleSwaps,
-            joints = r.JointPositionMm.OrderBy(p => p.Key).ToDictionary(p => p.Key.ToString(), p => new { median_mm = p.Value.Median, p95_mm = p.Value.P95, max_mm = p.Value.Max }),
+            jitter_mm = OrNull(r.JitterMm),
+            joints = r.JointPositionMm.OrderBy(p => p.Key).ToDictionary(p => p.Key.ToString(), p => new
+            {
+                median_mm = p.Value.Median, p95_mm = p.Value.P95, max_mm = p.Value.Max,
+                move_beyond_wearer_p95_mm = OrNull(MoveBeyond(r, p.Key)?.P95 ?? double.NaN),
+                jump_share = OrNull(MoveBeyond(r, p.Key)?.ShareAbove(EvaluationReport.JumpMm) ?? double.NaN),
+            }),
             disturbance = r.Disturbance == null ? null : new
             {
                 disturbed_device_frames = r.Disturbance.DisturbedDeviceFrames,

@@ -132,6 +132,28 @@ public class EvaluateOutputsTests
                 }
             }
             Assert.That(sum / count, Is.EqualTo(mpjpe).Within(0.01), "MPJPE from the CSV vs the evaluator's (mm)");
+            // Each joint's move a frame beyond the wearer's, p95 (linear between ranks, as the evaluator's percentiles),
+            // and their mean, the jitter figure.
+            double[][] rows = lines.Skip(1).Select(l => l.Split(',').Select(x => double.Parse(x, CultureInfo.InvariantCulture)).ToArray()).ToArray();
+            var joints = doc.RootElement.GetProperty("joints");
+            double p95Sum = 0;
+            int p95Count = 0;
+            for (int c = 2; c < header.Length; c += 6)
+            {
+                string name = header[c].Split('.')[0];
+                if (HumanoidBones.IsFinger(Enum.Parse<HumanoidBone>(name))) continue;
+                double D(double[] a, double[] b, int at) => Math.Sqrt(Sq(a[at] - b[at]) + Sq(a[at + 1] - b[at + 1]) + Sq(a[at + 2] - b[at + 2]));
+                double[] beyond = rows.Zip(rows.Skip(1), (a, b) => (D(b, a, c) - D(b, a, c + 3)) * 1000).OrderBy(x => x).ToArray();
+                double rank = 0.95 * (beyond.Length - 1);
+                int lo = (int)Math.Floor(rank);
+                double p95 = beyond[lo] + (beyond[Math.Min(lo + 1, beyond.Length - 1)] - beyond[lo]) * (rank - lo);
+                Assert.That(joints.GetProperty(name).GetProperty("move_beyond_wearer_p95_mm").GetDouble(), Is.EqualTo(p95).Within(0.01), name + ": move beyond the wearer's, p95 (mm)");
+                Assert.That(joints.GetProperty(name).GetProperty("jump_share").GetDouble(), Is.EqualTo(beyond.Count(x => x > 10) / (double)beyond.Length).Within(0.002), name + ": jumps");
+                p95Sum += p95;
+                p95Count++;
+            }
+            Assert.That(doc.RootElement.GetProperty("jitter_mm").GetDouble(), Is.EqualTo(p95Sum / p95Count).Within(0.01), "jitter: the joints' p95 on average (mm)");
+            StringAssert.Contains("steadiness:", r.Stdout);
             Assert.That(header.Any(h => h.StartsWith("LeftIndexDistal.solved", StringComparison.Ordinal)), Is.True, "finger joints are written too");
 
             BvhClip solved = BvhReader.ReadFile(bvh, new BvhReadOptions { Scale = 0.01f });
