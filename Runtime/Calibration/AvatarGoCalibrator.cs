@@ -179,19 +179,25 @@ namespace AvatarGo
         public CoreScaleMode AvatarScaleMode { get => m_ScaleMode; set => m_ScaleMode = value; }
 
         /// <summary>How slowly a shoulder releases a held shrug (s, clamped to 0…10, NaN gives the default 3; 0 holds none; <c>PipelineSettings.ShrugReleaseSeconds</c>); read when the pipeline is made.</summary>
-        public float ShrugReleaseSeconds { get => m_ShrugReleaseSeconds; set => m_ShrugReleaseSeconds = float.IsNaN(value) ? FullBodyIk.DefaultShrugReleaseSeconds : Math.Min(10f, Math.Max(0f, value)); }
+        public float ShrugReleaseSeconds { get => m_ShrugReleaseSeconds; set => m_ShrugReleaseSeconds = Clamped(value, 10f, FullBodyIk.DefaultShrugReleaseSeconds); }
 
         /// <summary>The straight leg's filter cutoff (Hz, clamped to 0…10, NaN gives the default 1; 0 turns it off; <c>PipelineSettings.StraightLegCutoffHz</c>); read when the pipeline is made.</summary>
-        public float StraightLegCutoffHz { get => m_StraightLegCutoffHz; set => m_StraightLegCutoffHz = float.IsNaN(value) ? FullBodyIk.DefaultStraightLegCutoffHz : Math.Min(10f, Math.Max(0f, value)); }
+        public float StraightLegCutoffHz { get => m_StraightLegCutoffHz; set => m_StraightLegCutoffHz = Clamped(value, 10f, FullBodyIk.DefaultStraightLegCutoffHz); }
 
         /// <summary>The straight arm's filter cutoff (Hz, clamped to 0…10, NaN gives the default 1; 0 turns it off; <c>PipelineSettings.StraightArmCutoffHz</c>); read when the pipeline is made.</summary>
-        public float StraightArmCutoffHz { get => m_StraightArmCutoffHz; set => m_StraightArmCutoffHz = float.IsNaN(value) ? FullBodyIk.DefaultStraightArmCutoffHz : Math.Min(10f, Math.Max(0f, value)); }
+        public float StraightArmCutoffHz { get => m_StraightArmCutoffHz; set => m_StraightArmCutoffHz = Clamped(value, 10f, FullBodyIk.DefaultStraightArmCutoffHz); }
 
         /// <summary>The hips-to-head change the back does not flex for (m, clamped to 0…0.02, NaN gives the default 0.0014; <c>PipelineSettings.SpineChordNoiseMetres</c>); read when the pipeline is made.</summary>
-        public float SpineChordNoiseMetres { get => m_SpineChordNoiseMetres; set => m_SpineChordNoiseMetres = float.IsNaN(value) ? FullBodyIk.DefaultChordNoiseMetres : Math.Min(0.02f, Math.Max(0f, value)); }
+        public float SpineChordNoiseMetres { get => m_SpineChordNoiseMetres; set => m_SpineChordNoiseMetres = Clamped(value, 0.02f, FullBodyIk.DefaultChordNoiseMetres); }
 
         /// <summary>The back's chord filter cutoff (Hz, clamped to 0…10, NaN gives the default 1; 0 turns it off; <c>PipelineSettings.SpineChordCutoffHz</c>); read when the pipeline is made.</summary>
-        public float SpineChordCutoffHz { get => m_SpineChordCutoffHz; set => m_SpineChordCutoffHz = float.IsNaN(value) ? FullBodyIk.DefaultChordCutoffHz : Math.Min(10f, Math.Max(0f, value)); }
+        public float SpineChordCutoffHz { get => m_SpineChordCutoffHz; set => m_SpineChordCutoffHz = Clamped(value, 10f, FullBodyIk.DefaultChordCutoffHz); }
+
+        // A tuning value set from code: NaN gives the default, anything else is clamped to 0…max (the inspector's range).
+        private static float Clamped(float value, float max, float fallback) => float.IsNaN(value) ? fallback : Math.Min(max, Math.Max(0f, value));
+
+        // A serialized tuning value as the pipeline takes it: outside 0…max (a hand-edited asset) gives the default.
+        private static float InRangeOr(float value, float max, float fallback) => value >= 0f && value <= max ? value : fallback;
 
         /// <summary>Whether each new calibration is followed by the refinement exercise (<see cref="Refinement"/>); read when a calibration completes.</summary>
         public bool RefinesAfterCalibration { get => m_RefineAfterCalibration; set => m_RefineAfterCalibration = value; }
@@ -479,12 +485,11 @@ namespace AvatarGo
             SelfAvatarPipeline old = _pipeline;
             AnnounceRefinement(_refinement.Cancel(old)); // an exercise recorded on the old pipeline is dropped
             var settings = new PipelineSettings { Offsets = m_Offsets };
-            settings.ShrugReleaseSeconds = m_ShrugReleaseSeconds >= 0f && m_ShrugReleaseSeconds <= 10f ? m_ShrugReleaseSeconds : FullBodyIk.DefaultShrugReleaseSeconds;
-            // Serialized values can be anything a hand-edited asset holds: out of range gives the default.
-            settings.StraightLegCutoffHz = m_StraightLegCutoffHz >= 0f && m_StraightLegCutoffHz <= 10f ? m_StraightLegCutoffHz : FullBodyIk.DefaultStraightLegCutoffHz;
-            settings.StraightArmCutoffHz = m_StraightArmCutoffHz >= 0f && m_StraightArmCutoffHz <= 10f ? m_StraightArmCutoffHz : FullBodyIk.DefaultStraightArmCutoffHz;
-            settings.SpineChordNoiseMetres = m_SpineChordNoiseMetres >= 0f && m_SpineChordNoiseMetres <= 0.02f ? m_SpineChordNoiseMetres : FullBodyIk.DefaultChordNoiseMetres;
-            settings.SpineChordCutoffHz = m_SpineChordCutoffHz >= 0f && m_SpineChordCutoffHz <= 10f ? m_SpineChordCutoffHz : FullBodyIk.DefaultChordCutoffHz;
+            settings.ShrugReleaseSeconds = InRangeOr(m_ShrugReleaseSeconds, 10f, FullBodyIk.DefaultShrugReleaseSeconds);
+            settings.StraightLegCutoffHz = InRangeOr(m_StraightLegCutoffHz, 10f, FullBodyIk.DefaultStraightLegCutoffHz);
+            settings.StraightArmCutoffHz = InRangeOr(m_StraightArmCutoffHz, 10f, FullBodyIk.DefaultStraightArmCutoffHz);
+            settings.SpineChordNoiseMetres = InRangeOr(m_SpineChordNoiseMetres, 0.02f, FullBodyIk.DefaultChordNoiseMetres);
+            settings.SpineChordCutoffHz = InRangeOr(m_SpineChordCutoffHz, 10f, FullBodyIk.DefaultChordCutoffHz);
             settings.Calibration.Proportions.Mode = m_ScaleMode;
             settings.Calibration.SpineJointsAsBound = SpineJointsAsBound;
             if (_fingers != null) _fingers.ConfigureHands(settings);

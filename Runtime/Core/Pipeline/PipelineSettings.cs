@@ -39,8 +39,7 @@ namespace AvatarGo.Core
         public float ShrugReleaseSeconds
         {
             get => _shrugReleaseSeconds;
-            set => _shrugReleaseSeconds = value >= 0f && !float.IsInfinity(value) ? value
-                : throw new ArgumentOutOfRangeException(nameof(value), value, "The shrug release time must be 0 or more seconds.");
+            set => _shrugReleaseSeconds = NonNegative(value, "The shrug release time must be 0 or more seconds.");
         }
 
         private float _spineChordNoiseMetres = FullBodyIk.DefaultChordNoiseMetres;
@@ -54,8 +53,7 @@ namespace AvatarGo.Core
         public float SpineChordNoiseMetres
         {
             get => _spineChordNoiseMetres;
-            set => _spineChordNoiseMetres = value >= 0f && !float.IsInfinity(value) ? value
-                : throw new ArgumentOutOfRangeException(nameof(value), value, "The spine's chord noise must be 0 or more metres.");
+            set => _spineChordNoiseMetres = NonNegative(value, "The spine's chord noise must be 0 or more metres.");
         }
 
         private float _spineChordCutoffHz = FullBodyIk.DefaultChordCutoffHz;
@@ -69,8 +67,7 @@ namespace AvatarGo.Core
         public float SpineChordCutoffHz
         {
             get => _spineChordCutoffHz;
-            set => _spineChordCutoffHz = value >= 0f && !float.IsInfinity(value) ? value
-                : throw new ArgumentOutOfRangeException(nameof(value), value, "The spine chord's cutoff must be 0 or more Hz.");
+            set => _spineChordCutoffHz = NonNegative(value, "The spine chord's cutoff must be 0 or more Hz.");
         }
 
         private float _straightLegCutoffHz = FullBodyIk.DefaultStraightLegCutoffHz;
@@ -84,8 +81,7 @@ namespace AvatarGo.Core
         public float StraightLegCutoffHz
         {
             get => _straightLegCutoffHz;
-            set => _straightLegCutoffHz = value >= 0f && !float.IsInfinity(value) ? value
-                : throw new ArgumentOutOfRangeException(nameof(value), value, "The straight leg's cutoff must be 0 or more Hz.");
+            set => _straightLegCutoffHz = NonNegative(value, "The straight leg's cutoff must be 0 or more Hz.");
         }
 
         private float _straightArmCutoffHz = FullBodyIk.DefaultStraightArmCutoffHz;
@@ -99,9 +95,12 @@ namespace AvatarGo.Core
         public float StraightArmCutoffHz
         {
             get => _straightArmCutoffHz;
-            set => _straightArmCutoffHz = value >= 0f && !float.IsInfinity(value) ? value
-                : throw new ArgumentOutOfRangeException(nameof(value), value, "The straight arm's cutoff must be 0 or more Hz.");
+            set => _straightArmCutoffHz = NonNegative(value, "The straight arm's cutoff must be 0 or more Hz.");
         }
+
+        // A setting that is a non-negative finite number (0 turns its feature off); else the setter throws.
+        private static float NonNegative(float value, string message) =>
+            value >= 0f && !float.IsInfinity(value) ? value : throw new ArgumentOutOfRangeException(nameof(value), value, message);
 
         /// <summary>The left hand's controller and grip.</summary>
         public HandSettings LeftHand { get; } = new HandSettings();

@@ -105,8 +105,7 @@ namespace AvatarGo.Core
             get => _chordNoiseMetres;
             set
             {
-                if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The chord noise must be 0 or more metres.");
-                _chordNoiseMetres = value;
+                _chordNoiseMetres = NonNegative(value, "The chord noise must be 0 or more metres.");
                 _flexStiffnessSquared = 2f * value * _chordCurvature;
             }
         }
@@ -136,8 +135,7 @@ namespace AvatarGo.Core
             get => _chordCutoffHz;
             set
             {
-                if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The chord's cutoff must be 0 or more Hz.");
-                _chordCutoffHz = value;
+                _chordCutoffHz = NonNegative(value, "The chord's cutoff must be 0 or more Hz.");
                 _headChord.Reset();
                 _neckChord.Reset();
             }
@@ -166,8 +164,7 @@ namespace AvatarGo.Core
             get => _straightLegCutoffHz;
             set
             {
-                if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The straight leg's cutoff must be 0 or more Hz.");
-                _straightLegCutoffHz = value;
+                _straightLegCutoffHz = NonNegative(value, "The straight leg's cutoff must be 0 or more Hz.");
                 _leftLegReach.Reset();
                 _rightLegReach.Reset();
             }
@@ -196,12 +193,15 @@ namespace AvatarGo.Core
             get => _straightArmCutoffHz;
             set
             {
-                if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The straight arm's cutoff must be 0 or more Hz.");
-                _straightArmCutoffHz = value;
+                _straightArmCutoffHz = NonNegative(value, "The straight arm's cutoff must be 0 or more Hz.");
                 _leftArmReach.Reset();
                 _rightArmReach.Reset();
             }
         }
+
+        // A setting that is a non-negative finite number (0 turns its feature off); else the setter throws.
+        private static float NonNegative(float value, string message) =>
+            value >= 0f && !float.IsInfinity(value) ? value : throw new ArgumentOutOfRangeException(nameof(value), value, message);
 
         /// <summary>
         /// How far the neck follows the head's orientation (0: the neck lies where the evenly bent spine puts it;
@@ -292,8 +292,7 @@ namespace AvatarGo.Core
             get => _shrugReleaseSeconds;
             set
             {
-                if (!(value >= 0f) || float.IsInfinity(value)) throw new ArgumentOutOfRangeException(nameof(value), value, "The shrug release time must be 0 or more seconds.");
-                _shrugReleaseSeconds = value;
+                _shrugReleaseSeconds = NonNegative(value, "The shrug release time must be 0 or more seconds.");
                 if (value == 0f) _leftShoulder.Held = _rightShoulder.Held = Quaternion.Identity;
             }
         }
