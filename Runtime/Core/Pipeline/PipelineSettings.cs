@@ -23,8 +23,8 @@ namespace AvatarGo.Core
         /// </summary>
         public OffsetMode Offsets { get; set; } = OffsetMode.Exact;
 
-        /// <summary>How the knees' bend direction is chosen (<see cref="KneeHintModel.PelvisAndFoot"/>); read when calibration completes.</summary>
-        public KneeHintModel KneeHints { get; set; } = KneeHintModel.PelvisAndFoot;
+        /// <summary>How the knees' bend direction is chosen (<see cref="KneeHintModel.OuterOfPelvisAndFoot"/>); read when calibration completes.</summary>
+        public KneeHintModel KneeHints { get; set; } = KneeHintModel.OuterOfPelvisAndFoot;
 
         /// <summary>How the elbows' bend direction is chosen (<see cref="ElbowHintModel.HandAxis"/>); read when calibration completes.</summary>
         public ElbowHintModel ElbowHints { get; set; } = ElbowHintModel.HandAxis;

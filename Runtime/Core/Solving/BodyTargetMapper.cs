@@ -33,6 +33,15 @@ namespace AvatarGo.Core
         /// </summary>
         public const float FallbackWeight = 0.26f;
 
+        /// <summary>
+        /// How strongly the default knee hint (<see cref="KneeHintModel.OuterOfPelvisAndFoot"/>) favours the more outward of
+        /// the pelvis's and the foot's flexion directions: they weigh 2σ(±g·Δ), σ the logistic function and Δ how much
+        /// further out (along the hip line, away from the body) the pelvis's direction points than the foot's. Two
+        /// directions 15° either side of forward (Δ = 2 sin 15° ≈ 0.52) weigh about 5 : 1; equally far out, they are added.
+        /// 3 was chosen from the measured curve (Documentation~/solver.md, "Knees and elbows").
+        /// </summary>
+        public const float OuterPlaneGain = 3f;
+
 
         private readonly PerRole<int> _deviceIndex = new PerRole<int>(-1);
         private readonly PerRole<RigidPose> _jointInDevice = new PerRole<RigidPose>();
@@ -61,7 +70,7 @@ namespace AvatarGo.Core
         /// are the scaled avatar and its T-pose at the walk-in (<see cref="Calibrator.ScaledAvatar"/>, <see cref="Calibrator.AvatarPose"/>).
         /// </summary>
         public BodyTargetMapper(CalibrationProfile profile, IReadOnlyList<DeviceInfo> devices, HumanoidMap avatar, SkeletonPose calibrationPose)
-            : this(profile, devices, avatar, calibrationPose, KneeHintModel.PelvisAndFoot, ElbowHintModel.HandAxis)
+            : this(profile, devices, avatar, calibrationPose, KneeHintModel.OuterOfPelvisAndFoot, ElbowHintModel.HandAxis)
         {
         }
 
@@ -182,7 +191,8 @@ namespace AvatarGo.Core
             Vector3 hip = _lastHips.TransformPoint(_hipInHips[s]);
             Vector3 axis = Vectors.NormalizeOr(target.Goal.Position - hip, -Vector3.UnitY);
             // The hip's flexion direction: square to the leg's axis, in the plane square to the hip line.
-            Vector3 pelvis = Vector3.Cross(axis, _lastHips.TransformDirection(_hipLineInHips));
+            Vector3 hipLine = _lastHips.TransformDirection(_hipLineInHips);
+            Vector3 pelvis = Vector3.Cross(axis, hipLine);
             Vector3 foot = Vector3.Cross(axis, target.Goal.TransformDirection(_lateralInFoot[s]));
             Vector3 direction;
             switch (_kneeModel)
@@ -193,11 +203,23 @@ namespace AvatarGo.Core
                     direction = Vectors.ProjectOnPlane(target.Goal.TransformDirection(_toesInFoot[s]), axis) + FallbackWeight * Faded(pelvis);
                     break;
                 case KneeHintModel.AnkleHinge: direction = AnkleHinge(hip, target.Goal, axis, pelvis, s); break;
-                default: direction = pelvis + foot; break;
+                case KneeHintModel.PelvisAndFoot: direction = pelvis + foot; break;
+                default: direction = OuterOf(pelvis, foot, side == BodySide.Left ? -hipLine : hipLine); break;
             }
             // A leg along the hip line (the splits) with the toes along it too: the body's forward.
             Vector3 fallback = Vectors.ProjectOnPlane(_lastHips.TransformDirection(_forwardInHips), axis);
             target.Hint = target.Goal.Position + Vectors.NormalizeOr(direction, Vectors.NormalizeOr(fallback, Vector3.UnitZ)) * _legLength[s];
+        }
+
+        // The pelvis's and the foot's flexion directions, the one that puts the knee further out weighted most. Where they
+        // disagree, either the hip has turned the thigh (the foot's is right) or the shin has turned against the foot (the
+        // pelvis's is right), and the knee kneeling, squatting or lunging is the outer of the two, not knock-kneed between
+        // them. Equally far out (most of walking), their sum; each keeps its length (how square its axis is to the leg), and
+        // the weights are smooth in the devices, so the hint is as continuous as the sum.
+        private static Vector3 OuterOf(Vector3 pelvis, Vector3 foot, Vector3 outward)
+        {
+            float towardPelvis = 1f / (1f + MathF.Exp(-OuterPlaneGain * Vector3.Dot(pelvis - foot, outward)));
+            return 2f * (towardPelvis * pelvis + (1f - towardPelvis) * foot);
         }
 
         // The knee where the foot's sagittal plane (through the ankle, square to the foot's lateral axis) meets the circle of

@@ -7,7 +7,7 @@ namespace AvatarGo.Core
     public enum KneeHintModel
     {
         /// <summary>
-        /// The default: the pelvis's and the foot's flexion planes added. The pelvis's: square to the hip-to-ankle axis and
+        /// The pelvis's and the foot's flexion planes added. The pelvis's: square to the hip-to-ankle axis and
         /// to the pelvis tracker's hip line (the way the hip flexes); the foot's: square to that axis and to the foot
         /// tracker's lateral axis (the ankle's flexion axis, toward the toes whatever their pitch). Each is weighted by how
         /// square its lateral axis is to the leg, so either takes over where the other's lateral axis lies along the leg.
@@ -40,5 +40,14 @@ namespace AvatarGo.Core
         /// carried by the foot tracker (it rolls with the foot, and flipped with a rest pose whose feet do not lie flat).
         /// </summary>
         CalibrationFrame = 5,
+
+        /// <summary>
+        /// The default: the pelvis's and the foot's flexion planes (as <see cref="PelvisAndFoot"/>), the one that puts the
+        /// knee further out weighted most (<see cref="BodyTargetMapper.OuterPlaneGain"/>): where the two disagree, the hip has
+        /// turned the thigh or the shin has turned against the foot, and a knee kneeling, squatting or lunging lies near the
+        /// outer of the two planes, not between them. Equally far out (most of walking), they are added, as in
+        /// <see cref="PelvisAndFoot"/>.
+        /// </summary>
+        OuterOfPelvisAndFoot = 6,
     }
 }

@@ -89,7 +89,10 @@ namespace AvatarGo.Core.Tests
         /// and 43.3 → 41.7 mm before; the CMU names with the original spine, Neck1 alone, give the original's figures).
         /// Since the back flexes about the hip line with a stiffness (2026-12-02), 17.47 → 19.71 mm: the original gained
         /// 0.34 mm, the CMU spine lost 0.12 (its flexion starts a joint lower), so the bound is 2.5 mm, was 2; elbows and
-        /// knees 30.3 → 36.0 mm (the original's gained 1.9 mm, the CMU's none), bound 6 mm, was 4.
+        /// knees 30.3 → 36.0 mm (the original's gained 1.9 mm, the CMU's none), bound 6 mm, was 4. Since the knees follow
+        /// the outer plane (session 15), 14.02 → 16.76 mm (17.42 → 19.48 with the planes added): the kneeling knees, which
+        /// sat 13–15 cm off at p95 in both, now sit 64 / 64 mm and 66 / 83 mm off (their p95 differed by 10–15 mm between the
+        /// two hierarchies before too), so the bound is 3 mm, was 2.5.
         /// </summary>
         [Test]
         public void TheCmuDatabasesBvhConversionGivesTheSameAvatar()
@@ -122,7 +125,7 @@ namespace AvatarGo.Core.Tests
 
             EvaluationReport own = Evaluate(original), other = Evaluate(cmu);
             Assert.That(other.Profile, Is.Not.Null, other.CalibrationMessage);
-            Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(2.5), "MPJPE (mm)");
+            Assert.That(other.AllJointsMm.Mean, Is.EqualTo(own.AllJointsMm.Mean).Within(3.0), "MPJPE (mm)");
             Assert.That(other.EndEffectorMm.Median, Is.EqualTo(own.EndEffectorMm.Median).Within(0.1), "end effectors median (mm)");
             Assert.That(other.MidJointMm.Median, Is.EqualTo(own.MidJointMm.Median).Within(6.0), "elbows and knees median (mm)");
         }

@@ -127,7 +127,7 @@ namespace AvatarGo.Core.Tests
         [Test]
         public void AnElbowDoesNotTurnRoundWhereTheArmPointsDownOutAndBack()
         {
-            var body = new Body(KneeHintModel.PelvisAndFoot);
+            var body = new Body(KneeHintModel.OuterOfPelvisAndFoot);
             Vector3 right = Vector3.Normalize(body.At(HumanoidBone.RightUpperLeg) - body.At(HumanoidBone.LeftUpperLeg));
             Vector3 up = Vector3.Normalize(body.At(HumanoidBone.Head) - body.At(HumanoidBone.Hips));
             foreach (BodySide side in new[] { BodySide.Left, BodySide.Right })
@@ -152,11 +152,12 @@ namespace AvatarGo.Core.Tests
         /// <summary>
         /// The toes' knee model had the same normalised fallback (the pelvis's flexion plane), which turned round where the
         /// leg passes through the hip line (a leg out sideways, the foot turned with it): a 30° bent knee by up to 29° and
-        /// 56 mm in a frame where the ankle moved 1 mm. The default model has no zero there (the foot's lateral axis turns
-        /// with the leg), which this also keeps.
+        /// 56 mm in a frame where the ankle moved 1 mm. The pelvis's and the foot's planes, added or the outer one weighted most
+        /// (the default), have no zero there (the foot's lateral axis turns with the leg), which this also keeps.
         /// </summary>
         [TestCase(KneeHintModel.Toes)]
         [TestCase(KneeHintModel.PelvisAndFoot)]
+        [TestCase(KneeHintModel.OuterOfPelvisAndFoot)]
         public void AKneeDoesNotTurnRoundWhereTheLegLiesAlongTheHipLine(KneeHintModel knees)
         {
             var body = new Body(knees);

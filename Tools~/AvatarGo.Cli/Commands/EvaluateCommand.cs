@@ -53,8 +53,9 @@ public sealed class EvaluateCommand : ICommand
           --scale-mode M       uniform (default, the paper's: by eye height) or fitted (legs and arms fitted to the
                                wearer's measured proportions, Documentation~/calibration.md)
           --json OUT           also write the figures as JSON to OUT
-          --knee-hint MODEL    how the knees' bend direction is chosen: pelvis-foot (default), pelvis, foot, toes,
-                               ankle-hinge, calibration (Documentation~/solver.md compares them)
+          --knee-hint MODEL    how the knees' bend direction is chosen: outer (default: the more outward of the
+                               pelvis's and the foot's planes), pelvis-foot, pelvis, foot, toes, ankle-hinge,
+                               calibration (Documentation~/solver.md compares them)
           --elbow-hint MODEL   how the elbows' bend direction is chosen: hand-axis (default), down-out-back, calibration
           --smoothing          filter every device pose (TrackingSettings.Smoothing: One Euro, 2 Hz at rest, beta 30;
                                off by default; Documentation~/solver.md, "Jitter")
@@ -210,15 +211,16 @@ public sealed class EvaluateCommand : ICommand
     // --knee-hint / --elbow-hint: the swivel models (Documentation~/solver.md compares them).
     private static void SetHintModels(ArgReader a, PipelineSettings settings)
     {
-        settings.KneeHints = a.String("knee-hint", "pelvis-foot") switch
+        settings.KneeHints = a.String("knee-hint", "outer") switch
         {
+            "outer" => KneeHintModel.OuterOfPelvisAndFoot,
             "pelvis-foot" => KneeHintModel.PelvisAndFoot,
             "pelvis" => KneeHintModel.Pelvis,
             "foot" => KneeHintModel.Foot,
             "toes" => KneeHintModel.Toes,
             "ankle-hinge" => KneeHintModel.AnkleHinge,
             "calibration" => KneeHintModel.CalibrationFrame,
-            string other => throw new UsageException($"--knee-hint must be pelvis-foot, pelvis, foot, toes, ankle-hinge or calibration, got '{other}'"),
+            string other => throw new UsageException($"--knee-hint must be outer, pelvis-foot, pelvis, foot, toes, ankle-hinge or calibration, got '{other}'"),
         };
         settings.ElbowHints = a.String("elbow-hint", "hand-axis") switch
         {
