@@ -101,6 +101,9 @@ namespace AvatarGo
         private void Update()
         {
             if (!SetUp()) return;
+            // A destroyed calibrator (Unity's == null is true for it; its isActiveAndEnabled would throw every frame): nothing
+            // is placed, as OnAnimatorIK sets nothing then.
+            if (m_Calibrator == null) return;
             // A stopped (or failed) calibrator has put the bind positions back (its OnDisable): the avatar is its Animator's
             // until it comes back, as with the transform driver (found in review: the last solved pose went on being set).
             if (!m_Calibrator.isActiveAndEnabled) return;
