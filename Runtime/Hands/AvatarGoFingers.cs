@@ -109,6 +109,9 @@ namespace AvatarGo
         private void LateUpdate()
         {
             if (_failed || !Attach()) return;
+            // A destroyed calibrator (Unity's == null is true for it; its isActiveAndEnabled would throw every frame): its
+            // pipeline is gone with it, nothing is written.
+            if (m_Calibrator == null) return;
             // A stopped (or failed) calibrator gave the avatar back to its Animator: the last grip is not written over it.
             if (!m_Calibrator.isActiveAndEnabled) return;
             SelfAvatarPipeline pipeline = m_Calibrator.Pipeline;
