@@ -46,8 +46,21 @@ namespace AvatarGo
         private HumanoidBinding _binding;
         private bool _failed, _attached;
 
-        /// <summary>The calibrator whose pipeline solves the fingers.</summary>
-        public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
+        /// <summary>
+        /// The calibrator whose pipeline solves the fingers. Set at run time, the hands are taken off the current one and
+        /// given to the new one (null: the nearest in the parents) on the next <c>LateUpdate</c>.
+        /// </summary>
+        public AvatarGoCalibrator Calibrator
+        {
+            get => m_Calibrator;
+            set
+            {
+                if (value == m_Calibrator) return;
+                if (m_Calibrator != null) m_Calibrator.Detach(this);
+                m_Calibrator = value;
+                _attached = false; // attached again, to the new one, by the next LateUpdate (or Start)
+            }
+        }
 
         /// <summary>A hand's grip mode (read by the pipeline every frame).</summary>
         public GripMode Grip(BodySide side) => side == BodySide.Left ? m_LeftGrip : m_RightGrip;
