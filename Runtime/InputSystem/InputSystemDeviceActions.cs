@@ -8,6 +8,7 @@ namespace AvatarGo
     /// The Input System actions of one tracked device of an <see cref="InputSystemTrackingSource"/>: its position (a Vector3
     /// control), its rotation (a Quaternion control) and its tracking state (an integer control, <c>InputTrackingState</c>
     /// bits). An action left without bindings gets the default binding of its role (<see cref="AvatarGo.Core.InputSystemBindings"/>).
+    /// The source takes its actions when it is enabled: an action changed while it is enabled is used from its next enable.
     /// </summary>
     [Serializable]
     public sealed class InputSystemDeviceActions

@@ -58,34 +58,34 @@ namespace AvatarGo
         private readonly bool[] _created = new bool[ActionCount];
         private readonly bool[] _enabledHere = new bool[ActionCount];
 
-        /// <summary>The HMD's actions.</summary>
+        /// <summary>The HMD's actions (changes take effect when the component is next enabled).</summary>
         public InputSystemDeviceActions Head => m_Head;
 
-        /// <summary>The left controller's actions.</summary>
+        /// <summary>The left controller's actions (changes take effect when the component is next enabled).</summary>
         public InputSystemDeviceActions LeftController => m_LeftController;
 
-        /// <summary>The right controller's actions.</summary>
+        /// <summary>The right controller's actions (changes take effect when the component is next enabled).</summary>
         public InputSystemDeviceActions RightController => m_RightController;
 
-        /// <summary>The pelvis tracker's actions.</summary>
+        /// <summary>The pelvis tracker's actions (changes take effect when the component is next enabled).</summary>
         public InputSystemDeviceActions PelvisTracker => m_PelvisTracker;
 
-        /// <summary>The left foot tracker's actions.</summary>
+        /// <summary>The left foot tracker's actions (changes take effect when the component is next enabled).</summary>
         public InputSystemDeviceActions LeftFootTracker => m_LeftFootTracker;
 
-        /// <summary>The right foot tracker's actions.</summary>
+        /// <summary>The right foot tracker's actions (changes take effect when the component is next enabled).</summary>
         public InputSystemDeviceActions RightFootTracker => m_RightFootTracker;
 
         /// <summary>The left trigger action. Changes take effect when the component is next enabled.</summary>
         public InputActionProperty LeftTrigger { get => m_LeftTrigger; set => m_LeftTrigger = value; }
 
-        /// <summary>The left grip action.</summary>
+        /// <summary>The left grip action. Changes take effect when the component is next enabled.</summary>
         public InputActionProperty LeftGrip { get => m_LeftGrip; set => m_LeftGrip = value; }
 
-        /// <summary>The right trigger action.</summary>
+        /// <summary>The right trigger action. Changes take effect when the component is next enabled.</summary>
         public InputActionProperty RightTrigger { get => m_RightTrigger; set => m_RightTrigger = value; }
 
-        /// <summary>The right grip action.</summary>
+        /// <summary>The right grip action. Changes take effect when the component is next enabled.</summary>
         public InputActionProperty RightGrip { get => m_RightGrip; set => m_RightGrip = value; }
 
         /// <inheritdoc/>
