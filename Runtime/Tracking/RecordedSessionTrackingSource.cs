@@ -56,10 +56,16 @@ namespace AvatarGo
         private bool _stepPending;
         private bool _failed;
 
-        /// <summary>The session as a text asset (used when set).</summary>
+        /// <summary>
+        /// The session as a text asset (used when set). Opened in <c>Awake</c> and by <see cref="Restart"/>: set from script
+        /// (after <c>AddComponent</c>, whose <c>Awake</c> found none), it plays once <see cref="Restart"/> is called.
+        /// </summary>
         public TextAsset Session { get => m_Session; set => m_Session = value; }
 
-        /// <summary>The session file used when <see cref="Session"/> is empty: absolute, or relative to <c>Application.persistentDataPath</c>.</summary>
+        /// <summary>
+        /// The session file used when <see cref="Session"/> is empty: absolute, or relative to <c>Application.persistentDataPath</c>.
+        /// Opened in <c>Awake</c> and by <see cref="Restart"/>, as <see cref="Session"/> is.
+        /// </summary>
         public string FilePath { get => m_FilePath; set => m_FilePath = value; }
 
         /// <summary>Real time or stepped.</summary>
