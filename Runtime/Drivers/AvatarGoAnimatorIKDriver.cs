@@ -80,11 +80,14 @@ namespace AvatarGo
         /// <summary>The calibrator whose pipeline drives this avatar.</summary>
         public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
 
-        /// <summary>Weight of the hand goals.</summary>
-        public float HandWeight { get => m_HandWeight; set => m_HandWeight = Mathf.Clamp01(value); }
+        /// <summary>Weight of the hand goals (clamped to 0…1; NaN gives the default 1).</summary>
+        public float HandWeight { get => m_HandWeight; set => m_HandWeight = Weight(value); }
 
-        /// <summary>Weight of the foot goals.</summary>
-        public float FootWeight { get => m_FootWeight; set => m_FootWeight = Mathf.Clamp01(value); }
+        /// <summary>Weight of the foot goals (clamped to 0…1; NaN gives the default 1).</summary>
+        public float FootWeight { get => m_FootWeight; set => m_FootWeight = Weight(value); }
+
+        // Mathf.Clamp01 lets NaN through (both of its comparisons are false), and the Animator would blend the limbs by it.
+        private static float Weight(float value) => float.IsNaN(value) ? 1f : Mathf.Clamp01(value);
 
         /// <summary>True once both hands' and both feet's effector frames have been measured.</summary>
         public bool EffectorFramesKnown
