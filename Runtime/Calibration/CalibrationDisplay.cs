@@ -171,6 +171,9 @@ namespace AvatarGo
             }
             _text = new GameObject("AvatarGo Instructions");
             _textMesh = _text.AddComponent<TextMesh>();
+            // Made again after the last one was destroyed with its scene (the calibrator lives on in another): the message
+            // shown there is written to this one too, though it is the same string.
+            _shownMessage = null;
             _textMesh.font = font;
             _textMesh.fontSize = 64;
             _textMesh.characterSize = _owner.TextSize;
