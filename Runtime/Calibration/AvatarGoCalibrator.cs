@@ -168,8 +168,19 @@ namespace AvatarGo
         /// <summary>The root of an avatar without a humanoid Animator. Read in <c>Start</c>, as <see cref="Animator"/> is.</summary>
         public Transform AvatarRoot { get => m_AvatarRoot; set => m_AvatarRoot = value; }
 
-        /// <summary>Exact or fixed offsets; read when the pipeline is made and at each calibration.</summary>
-        public OffsetMode Offsets { get => m_Offsets; set => m_Offsets = value; }
+        /// <summary>
+        /// Exact or fixed offsets; read when the pipeline is made and at each calibration (set at run time, it reaches the
+        /// pipeline's settings at once: the next calibration, or the next restored profile, uses it).
+        /// </summary>
+        public OffsetMode Offsets
+        {
+            get => m_Offsets;
+            set
+            {
+                m_Offsets = value;
+                if (_pipeline != null) _pipeline.Settings.Offsets = value; // the pipeline reads it when a calibration completes
+            }
+        }
 
         /// <summary>
         /// Uniform (the paper's eye-height scaling) or fitted proportions (legs and arms fitted to the wearer, applied to the

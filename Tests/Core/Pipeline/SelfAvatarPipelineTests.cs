@@ -37,6 +37,33 @@ namespace AvatarGo.Core.Tests
             Assert.That(p.Pose.Skeleton, Is.SameAs(p.ScaledAvatar.Skeleton));
         }
 
+        /// <summary>
+        /// The offset mode is read when a calibration completes, not only when the pipeline is made: the calibrator's
+        /// <c>Offsets</c> set at run time writes it into the live pipeline's settings and relies on this (found in review:
+        /// it only stored the field, so a recalibration after switching to the baseline still used exact offsets).
+        /// </summary>
+        [Test]
+        public void AnOffsetModeChangedOnALivePipelineIsUsedByTheNextCalibration()
+        {
+            var wearer = new Wearer("mocapbank_30fps.bvh", 67);
+            double t = 0;
+            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map, new PipelineSettings { Offsets = OffsetMode.Exact });
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            Assume.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), pipeline.LastCalibrationStep.Message);
+            Assert.That(pipeline.ActiveProfile.Mode, Is.EqualTo(OffsetMode.Exact));
+            // The pelvis tracker is worn on the lower back, centimetres from the hips joint: its exact offset is measured.
+            Assert.That(pipeline.ActiveProfile.JointInDevice(DeviceRole.Pelvis).Position.Length(), Is.GreaterThan(0.02f));
+
+            pipeline.Settings.Offsets = OffsetMode.Fixed;
+            pipeline.Reset();
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            Assume.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), pipeline.LastCalibrationStep.Message);
+            Assert.That(pipeline.ActiveProfile.Mode, Is.EqualTo(OffsetMode.Fixed));
+            // The baseline's offsets: the tracker taken as the hips, the head joint a constant offset from the HMD.
+            Assert.That(pipeline.ActiveProfile.JointInDevice(DeviceRole.Pelvis).Position.Length(), Is.EqualTo(0f));
+            Assert.That(Vector3.Distance(pipeline.ActiveProfile.JointInDevice(DeviceRole.Head).Position, CalibrationProfile.FixedHeadOffset), Is.EqualTo(0f));
+        }
+
         [Test]
         public void BothControllersPressingInTheSameFrameWithNoSecondPressEndsNotCalibrated()
         {
