@@ -212,7 +212,11 @@ namespace AvatarGo
             _mirrorHolder.SetActive(false);
             GameObject copy = Object.Instantiate(_binding.Root.gameObject, _mirrorHolder.transform);
             copy.name = _binding.Root.name + " (mirror)";
-            foreach (MonoBehaviour script in copy.GetComponentsInChildren<MonoBehaviour>(true)) Object.DestroyImmediate(script);
+            // Last first: a script that [RequireComponent]s another is added after it (AddComponent adds the required one
+            // first), and Unity refuses to remove a component another one on its GameObject still requires. Destroyed in
+            // the order found, the required script would stay on the copy and run when the holder is shown.
+            MonoBehaviour[] scripts = copy.GetComponentsInChildren<MonoBehaviour>(true);
+            for (int i = scripts.Length - 1; i >= 0; i--) Object.DestroyImmediate(scripts[i]);
             foreach (Animator animator in copy.GetComponentsInChildren<Animator>(true)) animator.enabled = false;
             // A picture, not a body: no collider (a CharacterController is one) for rays, hands or bodies to hit.
             foreach (Collider collider in copy.GetComponentsInChildren<Collider>(true)) Object.DestroyImmediate(collider);
