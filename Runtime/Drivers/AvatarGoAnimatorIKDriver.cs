@@ -116,7 +116,11 @@ namespace AvatarGo
             if (!ReferenceEquals(pipeline.ScaledAvatar, _avatar)) Retarget(pipeline.ScaledAvatar);
             // The root where the pipeline put it, scaled to the wearer, before the Animator evaluates.
             _binding.ApplyRoot(pose.World[0], m_Calibrator.TrackingSpace, pipeline.Profile.AvatarScale);
-            if (++_framesWithoutIK == FramesWithoutIKPass && !_warnedNoIKPass)
+            // Only frames in which the Animator would have updated count: with Time.timeScale 0 (a paused game) a Normal
+            // Animator gets no time and need not evaluate, so no IK pass then is no sign of a missing IK Pass layer; an
+            // UnscaledTime one runs on regardless.
+            bool animatorRan = Time.deltaTime > 0f || _animator.updateMode == AnimatorUpdateMode.UnscaledTime;
+            if (animatorRan && ++_framesWithoutIK == FramesWithoutIKPass && !_warnedNoIKPass)
             {
                 _warnedNoIKPass = true;
                 Debug.LogWarning($"{nameof(AvatarGoAnimatorIKDriver)} on '{name}': OnAnimatorIK is not being called. The Animator's controller " +
