@@ -17,7 +17,8 @@ namespace AvatarGo
 {
     /// <summary>
     /// Connects a tracking source to an XR Interaction Toolkit rig (an <c>XROrigin</c> from <c>com.unity.xr.core-utils</c>;
-    /// this assembly compiles only when it is installed). On <c>Awake</c>, before any source is read:
+    /// this assembly compiles only when it is installed). On <c>Start</c> (before the calibrator's first <c>Update</c>
+    /// reads the source), unless <see cref="Apply"/> was called before:
     /// <list type="bullet">
     /// <item>the source's <see cref="AvatarGoTrackingSource.TrackingSpaceOrigin"/> (when empty) becomes the origin's
     /// <c>CameraFloorOffsetObject</c>, the parent of the camera and the controllers, whose space the XR runtime tracks in;</item>
@@ -28,6 +29,9 @@ namespace AvatarGo
     /// (XRI 2.x and 3.x name them differently: <see cref="XrRigRules"/>).</item>
     /// </list>
     /// The trackers are not part of an XRI rig: assign them on the source.
+    /// <para>Added at run time with <c>AddComponent</c>: set its fields, then call <see cref="Apply"/> (to have the source
+    /// ready at once) or let <c>Start</c> apply them. Nothing is looked for in <c>Awake</c>, which runs inside
+    /// <c>AddComponent</c> before any field can be set.</para>
     /// </summary>
     [AddComponentMenu("XR/AvatarGo/XR Origin Tracking Setup")]
     [HelpURL(AvatarGoDocs.Manual + "tracking-sources.md#xr-origin-tracking-setup")]
@@ -49,10 +53,10 @@ namespace AvatarGo
         [SerializeField, Tooltip("Optional: the right controller's transform. Empty: found in the rig.")]
         private Transform m_RightController;
 
-        /// <summary>The rig (after <c>Awake</c>: the one found).</summary>
+        /// <summary>The rig (once applied: the one found).</summary>
         public XROrigin Origin { get => m_Origin; set => m_Origin = value; }
 
-        /// <summary>The source set up (after <c>Awake</c>: the one found).</summary>
+        /// <summary>The source set up (once applied: the one found).</summary>
         public AvatarGoTrackingSource Source { get => m_Source; set => m_Source = value; }
 
         /// <summary>The HMD transform given instead of the origin's camera, or null.</summary>
@@ -64,11 +68,19 @@ namespace AvatarGo
         /// <summary>The right controller transform given instead of the one found, or null.</summary>
         public Transform RightController { get => m_RightController; set => m_RightController = value; }
 
-        private void Awake() => Apply();
+        private bool _applied;
+
+        // Not in Awake: added with AddComponent, Awake runs before the caller can set a field, and would fail (disabling
+        // the component) or set the source up from a rig found instead of the one then assigned.
+        private void Start()
+        {
+            if (!_applied) Apply();
+        }
 
         /// <summary>
         /// Finds the rig and sets the source up as described on the class; false (and an error logged once, with this
-        /// component disabled) when there is no rig or no source.
+        /// component disabled) when there is no rig or no source. Called by <c>Start</c> when it has not been called
+        /// successfully before.
         /// </summary>
         public bool Apply()
         {
@@ -93,6 +105,7 @@ namespace AvatarGo
                 if (transforms.LeftController == null) transforms.LeftController = m_LeftController != null ? m_LeftController : FindController(offset, BodySide.Left);
                 if (transforms.RightController == null) transforms.RightController = m_RightController != null ? m_RightController : FindController(offset, BodySide.Right);
             }
+            _applied = true;
             return true;
         }
 

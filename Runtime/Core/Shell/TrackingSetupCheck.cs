@@ -16,8 +16,8 @@ namespace AvatarGo.Core
         /// <summary>The message when an XR Origin exists but the source's origin is empty and nothing will set it.</summary>
         public const string OriginNotConnected = "The scene has an XR Origin, but the source's Tracking Space Origin is empty: the devices are placed in world coordinates, so the avatar drifts from the rig as soon as the rig moves or its camera offset lifts the camera. Connect it (adds an XR Origin Tracking Setup, which uses the origin's Camera Offset).";
 
-        /// <summary>The message when an XR Origin Tracking Setup will set the origin on <c>Awake</c>.</summary>
-        public const string OriginSetOnAwake = "The source's Tracking Space Origin is empty; its XR Origin Tracking Setup sets it to the XR Origin's Camera Offset on Awake.";
+        /// <summary>The message when an XR Origin Tracking Setup will set the origin on <c>Start</c>.</summary>
+        public const string OriginSetOnStart = "The source's Tracking Space Origin is empty; its XR Origin Tracking Setup sets it to the XR Origin's Camera Offset on Start.";
 
         /// <summary>The message when there is no XR Origin and no tracking-space origin.</summary>
         public const string WorldSpace = "The source's Tracking Space Origin is empty: the devices are placed in world coordinates (floor at y = 0). Assign the XR rig's camera offset if the rig is moved in the scene.";
@@ -31,7 +31,7 @@ namespace AvatarGo.Core
                 findings.Add(new SetupFinding(SetupSeverity.Error, NoSource));
             else if (!facts.HasTrackingSpaceOrigin)
             {
-                if (facts.HasXROriginTrackingSetup) findings.Add(new SetupFinding(SetupSeverity.Info, OriginSetOnAwake));
+                if (facts.HasXROriginTrackingSetup) findings.Add(new SetupFinding(SetupSeverity.Info, OriginSetOnStart));
                 else if (facts.SceneHasXROrigin) findings.Add(new SetupFinding(SetupSeverity.Warning, OriginNotConnected, SetupFix.ConnectXROrigin));
                 else findings.Add(new SetupFinding(SetupSeverity.Info, WorldSpace));
             }

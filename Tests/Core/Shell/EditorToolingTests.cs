@@ -41,9 +41,9 @@ namespace AvatarGo.Core.Tests
 
             facts.HasXROriginTrackingSetup = true;
             finding = TrackingSetupCheck.Check(facts).Single();
-            Assert.That(finding.Severity, Is.EqualTo(SetupSeverity.Info), "the setup component fills it on Awake");
+            Assert.That(finding.Severity, Is.EqualTo(SetupSeverity.Info), "the setup component fills it on Start");
             Assert.That(finding.Fix, Is.EqualTo(SetupFix.None));
-            Assert.That(finding.Message, Is.EqualTo(TrackingSetupCheck.OriginSetOnAwake));
+            Assert.That(finding.Message, Is.EqualTo(TrackingSetupCheck.OriginSetOnStart));
         }
 
         [Test]
