@@ -13,6 +13,8 @@ namespace AvatarGo
     /// from a file path (absolute, or relative to <c>Application.persistentDataPath</c>, where <see cref="AvatarGoRecorder"/>
     /// writes; streamed from disk, never held whole). <c>Application.streamingAssetsPath</c> is not used: on Android it is
     /// inside the compressed APK, where file APIs cannot open it.
+    /// <para>Disabled, it reports every device lost (as the live sources do), at the time of the frame last delivered: the
+    /// playback clock does not advance and nothing recorded is skipped; enabled again, it goes on from there.</para>
     /// </summary>
     [AddComponentMenu("XR/AvatarGo/Recorded Session Tracking Source")]
     [HelpURL(AvatarGoDocs.Manual + "recorded-session-tracking-source.md")]
@@ -154,6 +156,13 @@ namespace AvatarGo
             if (_playback == null || _failed || frame.Samples.Length != _playback.Header.Devices.Count)
             {
                 frame.Clear();
+                return;
+            }
+            if (!isActiveAndEnabled)
+            {
+                // Disabled: every device lost, as the live sources report it; the playback waits (its clock, a pending
+                // Step and the next frames' presses are kept for when it is enabled again).
+                _playback.Pause(frame);
                 return;
             }
             try

@@ -9,7 +9,7 @@ namespace AvatarGo
     /// moves, or test fixtures): the HMD, both controllers and three trackers. A transform left empty is a device that is
     /// never tracked, and so is one whose GameObject is inactive (the XR Interaction Toolkit's input modality manager
     /// deactivates a controller until it is tracked). Triggers come from script (<see cref="SetTrigger"/>) as the
-    /// transforms carry no input.
+    /// transforms carry no input. Disabled, it reports every device lost, as the live sources do.
     /// </summary>
     [AddComponentMenu("XR/AvatarGo/Transform Tracking Source")]
     [HelpURL(AvatarGoDocs.Manual + "tracking-sources.md#transform-tracking-source")]
@@ -65,6 +65,7 @@ namespace AvatarGo
             SessionHeader header = Header;
             frame.Clear();
             frame.Time = Time.unscaledTimeAsDouble; // real time: a paused game (timeScale 0) still tracks and calibrates
+            if (!isActiveAndEnabled) return; // disabled: every device lost, as the live sources report it
             _events.Clear();
             for (int d = 0; d < header.Devices.Count; d++)
             {

@@ -131,6 +131,19 @@ namespace AvatarGo.Core
             Deliver(output);
         }
 
+        /// <summary>
+        /// Fills <paramref name="output"/> with every device lost, no trigger or grip and no events, at the time of the frame
+        /// last delivered (the first frame's before any): what a paused source (its component disabled) reports. The clock
+        /// does not move and nothing is consumed: the next <see cref="Advance"/>, <see cref="Step"/> or <see cref="Repeat"/>
+        /// goes on as if this had not been called. Allocation-free.
+        /// </summary>
+        public void Pause(SessionFrame output)
+        {
+            CheckOutput(output);
+            output.Clear();
+            output.Time = _hasCurrent ? _currentTime : _next.Time + _nextOffset;
+        }
+
         /// <summary>Closes the session.</summary>
         public void Dispose()
         {

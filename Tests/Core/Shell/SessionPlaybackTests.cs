@@ -60,6 +60,29 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void APauseReportsEveryDeviceLostAtTheLastTimeAndConsumesNothing()
+        {
+            using SessionPlayback playback = Play(Tiny());
+            var output = new SessionFrame(playback.Header);
+            playback.Pause(output);
+            Assert.That(output.Time, Is.EqualTo(0.0), "before any frame: the first frame's time");
+            playback.Advance(0, output);
+            playback.Advance(0.25, output); // frame 2, at 0.2; the press is on frame 3
+            for (int i = 0; i < 5; i++)
+            {
+                playback.Pause(output);
+                Assert.That(output.Samples[0].IsUsable, Is.False);
+                Assert.That(float.IsNaN(output.Trigger[0]), Is.True);
+                Assert.That(output.Events, Is.Empty);
+                Assert.That(output.Time, Is.EqualTo(0.2).Within(1e-9), "the time of the last frame delivered");
+            }
+            playback.Advance(0.1, output); // the clock from 0.25 to 0.35, as if no pause had been
+            Assert.That(output.Samples[0].Pose.Position.X, Is.EqualTo(3f));
+            Assert.That(output.Events.Count, Is.EqualTo(1));
+            Assert.That(output.Events[0].Kind, Is.EqualTo(DeviceEventKind.TriggerPressed), "the press was not consumed by the pause");
+        }
+
+        [Test]
         public void SteppingDeliversEveryFrameInTurnThenHoldsTheLast()
         {
             using SessionPlayback playback = Play(Tiny());
