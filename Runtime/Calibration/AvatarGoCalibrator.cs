@@ -113,8 +113,8 @@ namespace AvatarGo
         [SerializeField, Tooltip("Show the avatar's mirror image during the walk-in.")]
         private bool m_ShowMirror = true;
 
-        [SerializeField, Tooltip("How far in front of the avatar the mirror stands (m); the mirror image is twice as far.")]
-        private float m_MirrorDistance = 1.5f;
+        [SerializeField, Tooltip("How far in front of the avatar the mirror stands (m, 0 to 10); the mirror image is twice as far.")]
+        private float m_MirrorDistance = 1.5f; // MirrorPlane.DefaultDistance (a literal: the prefab generator reads it)
 
         [SerializeField, Tooltip("Keep the mirror once calibrated.")]
         private bool m_KeepMirrorAfterCalibration = false;
@@ -576,7 +576,7 @@ namespace AvatarGo
             _hasMirror = false;
             if (m_ShowMirror && _flow.ShowsMirror && pose != null && _pipeline.Profile != null)
             {
-                MirrorPlane tracking = MirrorPlane.InFrontOf(_pipeline.Profile.Placement, m_MirrorDistance);
+                MirrorPlane tracking = MirrorPlane.InFrontOf(_pipeline.Profile.Placement, MirrorPlane.ValidDistance(m_MirrorDistance));
                 TrackingSpace space = TrackingSpace;
                 _mirror = new MirrorPlane(space.ToWorld(tracking.Point), System.Numerics.Vector3.Transform(tracking.Normal, space.Origin.Rotation));
                 _hasMirror = true;

@@ -11,6 +11,20 @@ namespace AvatarGo.Core
     /// </summary>
     public readonly struct MirrorPlane
     {
+        /// <summary>The calibrator's default distance of the mirror in front of the avatar (m).</summary>
+        public const float DefaultDistance = 1.5f;
+
+        /// <summary>The farthest a mirror is put in front of the avatar (m): farther, its image would be too small to use.</summary>
+        public const float MaxDistance = 10f;
+
+        /// <summary>
+        /// A distance fit for <see cref="InFrontOf"/>: clamped to 0…<see cref="MaxDistance"/> (an infinite one to an end),
+        /// <see cref="DefaultDistance"/> for NaN. A serialized field can hold anything; a non-finite distance would put the
+        /// mirrored copy at infinity or NaN.
+        /// </summary>
+        public static float ValidDistance(float distance) =>
+            float.IsNaN(distance) ? DefaultDistance : Math.Min(MaxDistance, Math.Max(0f, distance));
+
         /// <summary>A point on the plane.</summary>
         public readonly Vector3 Point;
 

@@ -38,6 +38,19 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void AMirrorDistanceIsKeptFiniteWithTheDefaultForNaN()
+        {
+            Assert.That(MirrorPlane.ValidDistance(2.5f), Is.EqualTo(2.5f));
+            Assert.That(MirrorPlane.ValidDistance(float.NaN), Is.EqualTo(1.5f));
+            Assert.That(MirrorPlane.ValidDistance(float.PositiveInfinity), Is.EqualTo(10f));
+            Assert.That(MirrorPlane.ValidDistance(float.NegativeInfinity), Is.EqualTo(0f));
+            Assert.That(MirrorPlane.ValidDistance(-1f), Is.EqualTo(0f), "not behind the avatar");
+            var placement = new RigidPose(new Vector3(1, 0, 2), Quaternion.Identity);
+            MirrorPlane mirror = MirrorPlane.InFrontOf(placement, MirrorPlane.ValidDistance(float.PositiveInfinity));
+            Approx.Near(new Vector3(1, 0, 12), mirror.Point, 1e-5f, "10 m in front, not at infinity");
+        }
+
+        [Test]
         public void TheInstructionsFloatInFrontOfTheHeadAndFollowItLazily()
         {
             var panel = new FollowingPanel();
