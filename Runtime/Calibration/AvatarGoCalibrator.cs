@@ -315,7 +315,7 @@ namespace AvatarGo
         /// </summary>
         public bool RestoreSavedProfile()
         {
-            if (_pipeline == null || Binding == null) return false;
+            if (_pipeline == null || Binding == null || Binding.Root == null) return false; // a destroyed avatar has no file name
             string path = ProfilePath;
             if (!File.Exists(path)) return false;
             CalibrationProfile profile;
@@ -344,10 +344,19 @@ namespace AvatarGo
             return true;
         }
 
-        /// <summary>Saves the current calibration to <see cref="ProfilePath"/> (atomically). Returns false, with a warning, when it cannot.</summary>
+        /// <summary>
+        /// Saves the current calibration to <see cref="ProfilePath"/> (atomically). Returns false, with a warning, when it
+        /// cannot, and with an error when the avatar has been destroyed (the file is named after it).
+        /// </summary>
         public bool SaveProfile()
         {
             if (_pipeline == null || _pipeline.State != CalibrationState.Calibrated || _pipeline.Profile == null) return false;
+            // The profile's file is named after the avatar, which a destroyed one no longer has (its name would throw).
+            if (Binding == null || Binding.Root == null)
+            {
+                Debug.LogError($"{nameof(AvatarGoCalibrator)} on '{name}': the avatar was destroyed; its calibration is not saved.", this);
+                return false;
+            }
             try
             {
                 CalibrationProfileStore.Save(_pipeline.Profile, ProfilePath);
