@@ -94,18 +94,23 @@ namespace AvatarGo
                 return false;
             }
             _toldWaiting = false;
-            string folder = Path.Combine(AvatarGoFiles.Folder(Application.persistentDataPath), m_Folder ?? "");
-            // A name is taken by a finished recording or by one in progress (another recorder started in the same second)
-            // or interrupted (a partial file the last failure's message points to, which must not be truncated).
-            string path = AvatarGoFiles.NewRecordingPath(folder, m_FilePrefix, DateTime.Now, p => File.Exists(p) || File.Exists(p + SessionFileRecording.PartialSuffix));
+            string path = null;
+            // The path is made inside the try: Path.Combine throws an ArgumentException for characters a path cannot hold
+            // (Mono, Windows), and outside it that came back on every frame's retry.
             try
             {
+                string folder = Path.Combine(AvatarGoFiles.Folder(Application.persistentDataPath), m_Folder ?? "");
+                // A name is taken by a finished recording or by one in progress (another recorder started in the same second)
+                // or interrupted (a partial file the last failure's message points to, which must not be truncated).
+                path = AvatarGoFiles.NewRecordingPath(folder, m_FilePrefix, DateTime.Now, p => File.Exists(p) || File.Exists(p + SessionFileRecording.PartialSuffix));
                 _recording = new SessionFileRecording(path, header);
             }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException)
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException || e is NotSupportedException)
             {
-                Debug.LogError($"{nameof(AvatarGoRecorder)}: cannot record to {path}: {e.Message}", this);
-                m_Record = false;
+                Debug.LogError(path == null
+                    ? $"{nameof(AvatarGoRecorder)}: cannot record: the folder '{m_Folder}' or the file prefix '{m_FilePrefix}' is not a valid path; recording is switched off ({e.Message})"
+                    : $"{nameof(AvatarGoRecorder)}: cannot record to {path}; recording is switched off ({e.Message})", this);
+                m_Record = false; // once: Update does not try again until recording is switched on again
                 return false;
             }
             _recordingHeaderVersion = source.HeaderVersion;
