@@ -77,8 +77,23 @@ namespace AvatarGo
         private bool _hasBodySet, _setUp, _failed, _warnedNoIKPass;
         private int _framesWithoutIK, _measuredFrame = -1, _setFrame = -1;
 
-        /// <summary>The calibrator whose pipeline drives this avatar.</summary>
-        public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
+        /// <summary>
+        /// The calibrator whose pipeline drives this avatar. Set at run time, the driver binds to the new one (null: the
+        /// nearest in the parents) on its next <c>Update</c>, with the same checks as at start.
+        /// </summary>
+        public AvatarGoCalibrator Calibrator
+        {
+            get => m_Calibrator;
+            set
+            {
+                if (value == m_Calibrator) return;
+                m_Calibrator = value;
+                // Set up again for the new one: its binding (it binds the avatar in its Start), its Animator checked again.
+                // A setup error of the old one is forgotten (a component that disabled itself stays off until enabled).
+                _setUp = _failed = false;
+                _avatar = null;
+            }
+        }
 
         /// <summary>Weight of the hand goals (clamped to 0…1; NaN gives the default 1).</summary>
         public float HandWeight { get => m_HandWeight; set => m_HandWeight = Weight(value); }
