@@ -46,8 +46,21 @@ namespace AvatarGo
         /// <summary>The calibrator whose pipeline places the hand.</summary>
         public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
 
-        /// <summary>Which hand holds this controller.</summary>
-        public BodySide Hand { get => m_Hand; set => m_Hand = value; }
+        /// <summary>
+        /// Which hand holds this controller. Changed at run time, the model is given back to its own parent (as for a new
+        /// <see cref="Model"/>) and its offset is measured again from the new hand's controller.
+        /// </summary>
+        public BodySide Hand
+        {
+            get => m_Hand;
+            set
+            {
+                if (value == m_Hand) return;
+                GiveBack(); // where its own parent puts it: the offset is measured from there, not from the old hand's pose
+                m_Hand = value;
+                _hasOffset = false;
+            }
+        }
 
         /// <summary>
         /// The controller model. Setting another one gives the current one back to its own parent first (unless its parents
