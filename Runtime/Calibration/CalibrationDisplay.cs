@@ -25,7 +25,7 @@ namespace AvatarGo
         private readonly AvatarGoCalibrator _owner;
         private readonly HumanoidBinding _binding;
         private readonly Renderer[] _avatarRenderers;
-        private readonly bool[] _avatarRendererWasOn;
+        private readonly bool[] _hiddenHere; // the renderers this display turned off (forceRenderingOff), to turn on again
         private readonly FollowingPanel _panel = new FollowingPanel();
         private bool _avatarHidden;
         private GameObject _text;
@@ -42,17 +42,33 @@ namespace AvatarGo
             _owner = owner;
             _binding = binding;
             _avatarRenderers = binding.Root.GetComponentsInChildren<Renderer>(true);
-            _avatarRendererWasOn = new bool[_avatarRenderers.Length];
-            for (int i = 0; i < _avatarRenderers.Length; i++) _avatarRendererWasOn[i] = _avatarRenderers[i].enabled;
+            _hiddenHere = new bool[_avatarRenderers.Length];
         }
 
-        /// <summary>Shows or hides the avatar's renderers (those that were on when bound).</summary>
+        /// <summary>
+        /// Hides the avatar's renderers, or shows again those it hid. Hidden with <see cref="Renderer.forceRenderingOff"/>,
+        /// never <c>enabled</c>: the application's own choice (a head mesh disabled for a first-person view,
+        /// before or while the avatar is hidden) is never undone, and only a renderer this display turned off is turned on.
+        /// </summary>
         public void ShowAvatar(bool show)
         {
             if (show == !_avatarHidden) return;
             _avatarHidden = !show;
             for (int i = 0; i < _avatarRenderers.Length; i++)
-                if (_avatarRenderers[i] != null) _avatarRenderers[i].enabled = show && _avatarRendererWasOn[i];
+            {
+                Renderer renderer = _avatarRenderers[i];
+                if (renderer == null) continue;
+                if (!show && !renderer.forceRenderingOff)
+                {
+                    renderer.forceRenderingOff = true;
+                    _hiddenHere[i] = true;
+                }
+                else if (show && _hiddenHere[i])
+                {
+                    renderer.forceRenderingOff = false;
+                    _hiddenHere[i] = false;
+                }
+            }
         }
 
         /// <summary>One marker per device (and its mirror image), made again when the devices change.</summary>
@@ -204,7 +220,7 @@ namespace AvatarGo
         }
 
         // The mirrored copy: the avatar instantiated under an inactive holder (so that none of its scripts wakes up), its
-        // scripts and colliders removed and its Animators disabled, its renderers as the avatar's were.
+        // scripts and colliders removed and its Animators disabled, its renderers as the application has the avatar's.
         private bool CreateMirror()
         {
             if (_mirrorFailed) return false;
@@ -220,8 +236,10 @@ namespace AvatarGo
             foreach (Animator animator in copy.GetComponentsInChildren<Animator>(true)) animator.enabled = false;
             // A picture, not a body: no collider (a CharacterController is one) for rays, hands or bodies to hit.
             foreach (Collider collider in copy.GetComponentsInChildren<Collider>(true)) Object.DestroyImmediate(collider);
+            // Its renderers as the application has the avatar's (their enabled state is copied); none hidden by this display.
             Renderer[] renderers = copy.GetComponentsInChildren<Renderer>(true);
-            for (int i = 0; i < renderers.Length; i++) renderers[i].enabled = i < _avatarRendererWasOn.Length ? _avatarRendererWasOn[i] : true;
+            for (int i = 0; i < renderers.Length && i < _hiddenHere.Length; i++)
+                if (_hiddenHere[i]) renderers[i].forceRenderingOff = false;
             _mirror = _binding.OnCopy(copy.transform);
             if (_mirror != null) return true;
             Debug.LogWarning($"{nameof(AvatarGoCalibrator)}: the avatar's copy for the mirror does not have the avatar's hierarchy; no mirror is shown.", _owner);

@@ -5,8 +5,8 @@ namespace UnityEngine
     // UnityCsReference@2021.3 Runtime/Export/Graphics/GraphicsRenderers.bindings.cs
     public partial class Renderer : Component
     {
-        public bool enabled { get => throw null; set => throw null; }
-
         public Material sharedMaterial { get => throw null; set => throw null; }
+
+        public bool forceRenderingOff { get => throw null; set => throw null; }
     }
 }
