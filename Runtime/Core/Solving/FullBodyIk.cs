@@ -61,6 +61,7 @@ namespace AvatarGo.Core
             Math.Clamp((HoldFadeEndDegrees - neededDegrees) / (HoldFadeEndDegrees - MaxClavicleDegrees), 0f, 1f);
         private readonly int[] _spinePath;
         private readonly int[] _spineIndexOnPath;     // each path joint's index in _spine, -1 for a joint between them
+        private readonly int[] _spineOnPath;          // each spine joint's index in _spinePath
         // What a frame's solve reads before its final forward kinematics, the joints it updates on the way (parents
         // first): the joints above the hips (before they are placed: a floor-level root, when the origin moved); the
         // spine's first joint and the legs' roots, which the spine's bend axis reads, and every joint above them (after the
@@ -235,6 +236,8 @@ namespace AvatarGo.Core
             _spinePath = path.ToArray();
             _spineIndexOnPath = new int[_spinePath.Length];
             for (int k = 0; k < _spinePath.Length; k++) _spineIndexOnPath[k] = Array.IndexOf(_spine, _spinePath[k]);
+            _spineOnPath = new int[_spine.Length];
+            for (int i = 0; i < _spine.Length; i++) _spineOnPath[i] = Array.IndexOf(_spinePath, _spine[i]);
             _spineReference = new Quaternion[_spine.Length];
             for (int i = 0; i < _spine.Length; i++)
                 _spineReference[i] = reference != null ? reference.Local[_spine[i]].Rotation : s.GetRestLocal(_spine[i]).Rotation;
@@ -378,12 +381,13 @@ namespace AvatarGo.Core
         {
             RigidPose[] w = pose.World;
             Vector3 headTarget = head.Position;
-            int count = _spine.Length, end = _head;
+            int count = _spine.Length, end = _head, endOnPath = _spinePath.Length - 1;
             Vector3 endTarget = headTarget;
             if (toNeck)
             {
                 count--;
                 end = _neck;
+                endOnPath = _spineOnPath[count];
                 endTarget = neckTarget;
             }
             Quaternion bend = Rotations.IsUnit(spineBend) ? Quaternion.Normalize(spineBend) : Quaternion.Identity;
@@ -417,8 +421,9 @@ namespace AvatarGo.Core
                 float backwardArch = alpha > 1e-6f ? -alpha / _spine.Length * Vector3.Dot(new Vector3(bend.X, bend.Y, bend.Z) / sinHalf, flexAxis) : 0f;
                 phi = FirstFlex + Math.Clamp(backwardArch, 0f, MaxStraightenedArch);
             }
-            float chord = BendSpine(pose, share, flexAxis, phi, count, end);
-            float slope = ChordSlope(pose, share, flexAxis, phi, count, end, chord), posedPhi = phi + SlopeStepRadians;
+            int firstFlexed = PoseUnflexed(pose, share, count, endOnPath);
+            float chord = BendSpine(pose, share, flexAxis, phi, count, firstFlexed, endOnPath);
+            float slope = ChordSlope(pose, share, flexAxis, phi, count, firstFlexed, endOnPath, chord), posedPhi = phi + SlopeStepRadians;
             float cost = FlexCost(chord - wanted, phi), extraDamping = 0f;
             for (int i = 0; i < SpineIterations; i++)
             {
@@ -427,7 +432,7 @@ namespace AvatarGo.Core
                 float step = -((chord - wanted) * slope + _flexStiffnessSquared * phi) / curvature;
                 float next = Math.Clamp(phi + Math.Clamp(step, -MaxSpineStepRadians, MaxSpineStepRadians), -MaxSpineJointRadians, MaxSpineJointRadians);
                 if (!Vectors.IsFinite(next) || Math.Abs(next - phi) < SpineStepTolerance) break;
-                float nextChord = BendSpine(pose, share, flexAxis, next, count, end);
+                float nextChord = BendSpine(pose, share, flexAxis, next, count, firstFlexed, endOnPath);
                 posedPhi = next;
                 float nextCost = FlexCost(nextChord - wanted, next);
                 if (nextCost <= cost)
@@ -442,11 +447,11 @@ namespace AvatarGo.Core
                 }
                 else extraDamping = Math.Max(10f * extraDamping, curvature);
             }
-            if (posedPhi != phi) BendSpine(pose, share, flexAxis, phi, count, end); // the pose is a function of φ alone
+            if (posedPhi != phi) BendSpine(pose, share, flexAxis, phi, count, firstFlexed, endOnPath); // the pose is a function of φ alone
             _spineFlex = phi;
             Quaternion aim = Rotations.FromTo(w[end].Position - origin, endTarget - origin);
             pose.RotateWorld(_spine[0], aim);
-            pose.UpdateWorld(_spinePath);
+            pose.UpdateWorld(_spinePath); // the whole path: BendSpine stopped at the chord's end, and the aim turned the first joint
             if (end != _head)
             {
                 pose.RotateWorld(_neck, Rotations.FromTo(w[_head].Position - w[_neck].Position, headTarget - w[_neck].Position));
@@ -473,21 +478,41 @@ namespace AvatarGo.Core
         // The chord's rate of change with φ, by a forward difference (each joint's turn is applied in the world frame on
         // top of the turns below it, so the joints' flexion axes are the hip line turned by the bend's share below them:
         // no simple closed form); leaves the spine posed at phi + SlopeStepRadians.
-        private float ChordSlope(SkeletonPose pose, Quaternion share, Vector3 flexAxis, float phi, int count, int end, float chord) =>
-            (BendSpine(pose, share, flexAxis, phi + SlopeStepRadians, count, end) - chord) / SlopeStepRadians;
+        private float ChordSlope(SkeletonPose pose, Quaternion share, Vector3 flexAxis, float phi, int count, int firstFlexed, int endOnPath, float chord) =>
+            (BendSpine(pose, share, flexAxis, phi + SlopeStepRadians, count, firstFlexed, endOnPath) - chord) / SlopeStepRadians;
+
+        // Poses the start of the spine's path that φ does not move, the same for every φ of one solve: the first spine joint
+        // (turned by the bend's share alone) and the path up to the first joint that flexes (the path's index of which is
+        // returned; past endOnPath when none does). BendSpine poses the rest, from there.
+        private int PoseUnflexed(SkeletonPose pose, Quaternion share, int count, int endOnPath)
+        {
+            int firstFlexed = 0;
+            while (firstFlexed <= endOnPath && !(_spineIndexOnPath[firstFlexed] >= 1 && _spineIndexOnPath[firstFlexed] < count)) firstFlexed++;
+            PosePath(pose, share, share, count, 0, firstFlexed); // no joint there flexes: the second turn is not used
+            return firstFlexed;
+        }
 
         // Sets the spine to its reference with each of its first count joints turned by the bend's share and, above the
         // first (whose flexion would not change the chord, only swing what hangs from it: 3ds Max Biped's thighs), by phi
         // about the flexion axis (the others keep their reference); returns the distance from the first spine joint
-        // to joint end. One pass down the spine's path: each joint's world pose from its parent's, then, for a turned
-        // spine joint, the turn applied about its own position (which it does not move), as turning the joints one by
-        // one from the bottom and updating the path after each would give, at a path's cost instead of one per turned joint.
-        private float BendSpine(SkeletonPose pose, Quaternion share, Vector3 flexAxis, float phi, int count, int end)
+        // to the path's joint endOnPath. The path before firstFlexed is as PoseUnflexed left it (φ does not move it), and
+        // the path beyond endOnPath (the head, for the chord to the neck) is left for the update after the aim.
+        private float BendSpine(SkeletonPose pose, Quaternion share, Vector3 flexAxis, float phi, int count, int firstFlexed, int endOnPath)
         {
             Quaternion turn = Quaternion.Normalize(Quaternion.CreateFromAxisAngle(flexAxis, phi) * share);
+            PosePath(pose, share, turn, count, firstFlexed, endOnPath + 1);
+            return Vector3.Distance(pose.World[_spine[0]].Position, pose.World[_spinePath[endOnPath]].Position);
+        }
+
+        // The spine's path from index `from` up to (not including) `to`, in one pass down it: each joint's world pose from its
+        // parent's, then, for one of the first count spine joints, its turn (the first one's `share`, the others' `turn`)
+        // applied about its own position (which it does not move), as turning the joints one by one from the bottom and
+        // updating the path after each would give, at a path's cost instead of one per turned joint.
+        private void PosePath(SkeletonPose pose, Quaternion share, Quaternion turn, int count, int from, int to)
+        {
             RigidPose[] local = pose.Local, world = pose.World;
             Skeleton s = pose.Skeleton;
-            for (int k = 0; k < _spinePath.Length; k++)
+            for (int k = from; k < to; k++)
             {
                 int j = _spinePath[k], spineIndex = _spineIndexOnPath[k];
                 int parent = s.GetParent(j);
@@ -498,11 +523,11 @@ namespace AvatarGo.Core
                 {
                     Quaternion turned = Quaternion.Normalize((spineIndex == 0 ? share : turn) * placed.Rotation);
                     local[j] = local[j].WithRotation(Quaternion.Normalize(Quaternion.Conjugate(parentWorld.Rotation) * turned));
-                    placed = parentWorld * local[j];
+                    // parentWorld * local[j], whose position is the one placed already: the turn is about the joint itself.
+                    placed = new RigidPose(placed.Position, Quaternion.Normalize(parentWorld.Rotation * local[j].Rotation));
                 }
                 world[j] = placed;
             }
-            return Vector3.Distance(world[_spine[0]].Position, world[end].Position);
         }
 
         // k in chord(φ) ≈ L − kφ² for the whole spine (every spine joint flexed by φ about axis) in the calibration pose,
