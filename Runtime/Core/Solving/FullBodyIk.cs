@@ -69,6 +69,11 @@ namespace AvatarGo.Core
         // them (after the spine and head: a rig may hang its thighs from a spine joint). Nothing the solve reads is left
         // from an earlier frame's world poses or from before a joint above it moved.
         private readonly int[] _aboveHips, _beforeSpineAndLegs, _beforeLimbs;
+        // The final forward kinematics of a frame that solved every part (the spine to the head, both feet, both hands): every
+        // joint but those the solve left up to date (the joints updated before the limbs, the spine's path below the head,
+        // whose rotation is set after the spine's last update, each limb's chain, each clavicle down to its upper arm), parents
+        // first. A frame that left a part out updates the whole skeleton.
+        private readonly int[] _afterFullSolve;
         private readonly int _neck = -1;              // the neck, when it is the last spine joint and more come before it
         private readonly Vector3 _neckInHead;         // the neck joint in the head's frame, in the reference pose
         private float _spineFlex;                     // the last spine solve's flexion per joint (radians)
@@ -270,6 +275,17 @@ namespace AvatarGo.Core
             _aboveHips = AncestorsOrSelf(s, -1, s.GetParent(_hips));
             _beforeSpineAndLegs = AncestorsOrSelf(s, -1, _spine.Length > 0 ? _spine[0] : _head, _leftLeg.Root, _rightLeg.Root);
             _beforeLimbs = AncestorsOrSelf(s, -1, ArmStart(_leftShoulder, _leftArm), ArmStart(_rightShoulder, _rightArm), _leftLeg.Root, _rightLeg.Root);
+            var upToDate = new HashSet<int>(_aboveHips);
+            upToDate.UnionWith(_beforeLimbs);
+            upToDate.UnionWith(_spinePath);
+            upToDate.Remove(_head);
+            foreach (LimbChain limb in new[] { _leftLeg, _rightLeg, _leftArm, _rightArm }) upToDate.UnionWith(limb.Path);
+            _leftShoulder.AddPosedJoints(upToDate);
+            _rightShoulder.AddPosedJoints(upToDate);
+            var afterFullSolve = new List<int>();
+            for (int j = 0; j < s.JointCount; j++)
+                if (!upToDate.Contains(j)) afterFullSolve.Add(j);
+            _afterFullSolve = afterFullSolve.ToArray();
         }
 
         /// <summary>
@@ -369,7 +385,10 @@ namespace AvatarGo.Core
             else { _leftShoulder.KeepStill(pose, holdShrugs); _leftArmReach.Reset(); }
             if (targets.RightHand.IsActive) report.RightHand = SolveArm(pose, _rightArm, _rightShoulder, _rightArmReach, in targets.RightHand, holdShrugs, continuous, deltaSeconds);
             else { _rightShoulder.KeepStill(pose, holdShrugs); _rightArmReach.Reset(); }
-            pose.UpdateWorld();
+            bool solvedAll = targets.HeadActive && targets.Head.IsValid && targets.LeftFoot.IsActive && targets.RightFoot.IsActive
+                && targets.LeftHand.IsActive && targets.RightHand.IsActive;
+            if (solvedAll) pose.UpdateWorld(_afterFullSolve);
+            else pose.UpdateWorld();
             return report;
         }
 
@@ -699,6 +718,14 @@ namespace AvatarGo.Core
                 var between = new List<int>();
                 for (int j = s.GetParent(upperArm); j != clavicle; j = s.GetParent(j)) between.Insert(0, j);
                 _toUpperArm = between.ToArray();
+            }
+
+            // The joints Set poses (none without a clavicle).
+            public void AddPosedJoints(HashSet<int> joints)
+            {
+                if (Clavicle < 0) return;
+                joints.Add(Clavicle);
+                joints.UnionWith(_toUpperArm);
             }
 
             public Quaternion FrameRotation(SkeletonPose pose) => _frameJoint < 0 ? pose.Origin.Rotation : pose.World[_frameJoint].Rotation;
