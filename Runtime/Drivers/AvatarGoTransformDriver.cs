@@ -29,8 +29,25 @@ namespace AvatarGo
         private Animator _disabledAnimator;
         private bool _failed;
 
-        /// <summary>The calibrator whose pipeline drives this avatar.</summary>
-        public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
+        /// <summary>
+        /// The calibrator whose pipeline drives this avatar. Set at run time, the Animator this driver disabled is enabled
+        /// again and the new calibrator (null: the nearest in the parents) is used from the next <c>LateUpdate</c>, its
+        /// avatar's Animator disabled then; a setup error of the old one is forgotten (a component that disabled itself stays
+        /// off until enabled).
+        /// </summary>
+        public AvatarGoCalibrator Calibrator
+        {
+            get => m_Calibrator;
+            set
+            {
+                if (value == m_Calibrator) return;
+                // The old avatar's Animator is its own again (it would stay disabled for good, and the new avatar's never
+                // be disabled, as _disabledAnimator was taken).
+                GiveAnimatorBack();
+                m_Calibrator = value;
+                _failed = false;
+            }
+        }
 
         private void OnDisable() => GiveAnimatorBack();
 
