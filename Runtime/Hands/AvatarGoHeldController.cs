@@ -43,8 +43,26 @@ namespace AvatarGo
         private bool _moved, _hasOffset, _failed;
         private RigidPose _offset = RigidPose.Identity;
 
-        /// <summary>The calibrator whose pipeline places the hand.</summary>
-        public AvatarGoCalibrator Calibrator { get => m_Calibrator; set => m_Calibrator = value; }
+        /// <summary>
+        /// The calibrator whose pipeline places the hand. Set at run time, the model is given back to its own parent (as for
+        /// a new <see cref="Model"/>) and, from the next <c>LateUpdate</c>, placed by the new calibrator (null: the nearest in
+        /// the parents), its offset measured again from that calibrator's controller; a setup error of the old one is
+        /// forgotten (a component that disabled itself stays off until enabled).
+        /// </summary>
+        public AvatarGoCalibrator Calibrator
+        {
+            get => m_Calibrator;
+            set
+            {
+                if (value == m_Calibrator) return;
+                // Not kept from the old one: its offset (measured from its controller), the parent it moved the model under
+                // (its source's origin).
+                GiveBack();
+                m_Calibrator = value;
+                _hasOffset = false;
+                _failed = false;
+            }
+        }
 
         /// <summary>
         /// Which hand holds this controller. Changed at run time, the model is given back to its own parent (as for a new
