@@ -120,10 +120,10 @@ namespace AvatarGo
         private bool m_KeepMirrorAfterCalibration = false;
 
         [SerializeField, Tooltip("Diameter of the device markers (m).")]
-        private float m_MarkerSize = 0.06f;
+        private float m_MarkerSize = 0.06f; // CalibrationDisplaySizes.DefaultMarkerSize (a literal: the prefab generator reads it)
 
         [SerializeField, Tooltip("TextMesh character size of the instructions (world units per font unit).")]
-        private float m_TextSize = 0.0025f;
+        private float m_TextSize = 0.0025f; // CalibrationDisplaySizes.DefaultTextSize
 
         [SerializeField, Tooltip("The T-pose step succeeded: the avatar is shown for the walk-in.")]
         private UnityEvent m_OnTPoseAccepted = new UnityEvent();
@@ -228,11 +228,11 @@ namespace AvatarGo
         /// <summary>Whether each new calibration is saved to <see cref="ProfilePath"/>.</summary>
         public bool SavesProfile { get => m_SaveProfile; set => m_SaveProfile = value; }
 
-        /// <summary>Diameter of the device markers (m).</summary>
-        public float MarkerSize => m_MarkerSize;
+        /// <summary>Diameter of the device markers (m; NaN, zero or negative gives the default 0.06, at most 0.5: <c>CalibrationDisplaySizes.ValidMarkerSize</c>).</summary>
+        public float MarkerSize => CalibrationDisplaySizes.ValidMarkerSize(m_MarkerSize);
 
-        /// <summary>Character size of the instructions.</summary>
-        public float TextSize => m_TextSize;
+        /// <summary>Character size of the instructions (NaN, zero or negative gives the default 0.0025, at most 0.05: <c>CalibrationDisplaySizes.ValidTextSize</c>).</summary>
+        public float TextSize => CalibrationDisplaySizes.ValidTextSize(m_TextSize);
 
         /// <summary>The avatar's transforms bound to the core, once started (null if the avatar cannot be bound).</summary>
         public HumanoidBinding Binding { get; private set; }

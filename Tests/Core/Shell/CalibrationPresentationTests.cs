@@ -51,6 +51,21 @@ namespace AvatarGo.Core.Tests
         }
 
         [Test]
+        public void TheMarkerAndTextSizesAreKeptFinitePositiveWithTheDefaultsForNaN()
+        {
+            Assert.That(CalibrationDisplaySizes.ValidMarkerSize(0.1f), Is.EqualTo(0.1f));
+            Assert.That(CalibrationDisplaySizes.ValidMarkerSize(float.NaN), Is.EqualTo(0.06f));
+            Assert.That(CalibrationDisplaySizes.ValidMarkerSize(0f), Is.EqualTo(0.06f), "a marker of no size is the default");
+            Assert.That(CalibrationDisplaySizes.ValidMarkerSize(-0.1f), Is.EqualTo(0.06f));
+            Assert.That(CalibrationDisplaySizes.ValidMarkerSize(float.NegativeInfinity), Is.EqualTo(0.06f));
+            Assert.That(CalibrationDisplaySizes.ValidMarkerSize(float.PositiveInfinity), Is.EqualTo(0.5f));
+            Assert.That(CalibrationDisplaySizes.ValidTextSize(0.004f), Is.EqualTo(0.004f));
+            Assert.That(CalibrationDisplaySizes.ValidTextSize(float.NaN), Is.EqualTo(0.0025f));
+            Assert.That(CalibrationDisplaySizes.ValidTextSize(-1f), Is.EqualTo(0.0025f));
+            Assert.That(CalibrationDisplaySizes.ValidTextSize(float.PositiveInfinity), Is.EqualTo(0.05f));
+        }
+
+        [Test]
         public void TheInstructionsFloatInFrontOfTheHeadAndFollowItLazily()
         {
             var panel = new FollowingPanel();
