@@ -39,7 +39,7 @@ namespace AvatarGo.Core
         public float ShrugReleaseSeconds
         {
             get => _shrugReleaseSeconds;
-            set => _shrugReleaseSeconds = NonNegative(value, "The shrug release time must be 0 or more seconds.");
+            set => _shrugReleaseSeconds = SettingChecks.NotNegativeFinite(value, nameof(PipelineSettings), nameof(ShrugReleaseSeconds));
         }
 
         private float _spineChordNoiseMetres = FullBodyIk.DefaultChordNoiseMetres;
@@ -53,7 +53,7 @@ namespace AvatarGo.Core
         public float SpineChordNoiseMetres
         {
             get => _spineChordNoiseMetres;
-            set => _spineChordNoiseMetres = NonNegative(value, "The spine's chord noise must be 0 or more metres.");
+            set => _spineChordNoiseMetres = SettingChecks.NotNegativeFinite(value, nameof(PipelineSettings), nameof(SpineChordNoiseMetres));
         }
 
         private float _spineChordCutoffHz = FullBodyIk.DefaultChordCutoffHz;
@@ -67,7 +67,7 @@ namespace AvatarGo.Core
         public float SpineChordCutoffHz
         {
             get => _spineChordCutoffHz;
-            set => _spineChordCutoffHz = NonNegative(value, "The spine chord's cutoff must be 0 or more Hz.");
+            set => _spineChordCutoffHz = SettingChecks.NotNegativeFinite(value, nameof(PipelineSettings), nameof(SpineChordCutoffHz));
         }
 
         private float _straightLegCutoffHz = FullBodyIk.DefaultStraightLegCutoffHz;
@@ -81,7 +81,7 @@ namespace AvatarGo.Core
         public float StraightLegCutoffHz
         {
             get => _straightLegCutoffHz;
-            set => _straightLegCutoffHz = NonNegative(value, "The straight leg's cutoff must be 0 or more Hz.");
+            set => _straightLegCutoffHz = SettingChecks.NotNegativeFinite(value, nameof(PipelineSettings), nameof(StraightLegCutoffHz));
         }
 
         private float _straightArmCutoffHz = FullBodyIk.DefaultStraightArmCutoffHz;
@@ -95,12 +95,8 @@ namespace AvatarGo.Core
         public float StraightArmCutoffHz
         {
             get => _straightArmCutoffHz;
-            set => _straightArmCutoffHz = NonNegative(value, "The straight arm's cutoff must be 0 or more Hz.");
+            set => _straightArmCutoffHz = SettingChecks.NotNegativeFinite(value, nameof(PipelineSettings), nameof(StraightArmCutoffHz));
         }
-
-        // A setting that is a non-negative finite number (0 turns its feature off); else the setter throws.
-        private static float NonNegative(float value, string message) =>
-            value >= 0f && !float.IsInfinity(value) ? value : throw new ArgumentOutOfRangeException(nameof(value), value, message);
 
         /// <summary>The left hand's controller and grip.</summary>
         public HandSettings LeftHand { get; } = new HandSettings();

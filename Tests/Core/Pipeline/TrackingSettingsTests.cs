@@ -58,6 +58,11 @@ namespace AvatarGo.Core.Tests
         [TestCase(typeof(ProportionSettings), nameof(ProportionSettings.PelvisTrackerTolerance), new[] { float.NaN, -0.01f, float.PositiveInfinity })]
         [TestCase(typeof(ProportionSettings), nameof(ProportionSettings.ControllerTolerance), new[] { float.NaN, -0.01f, float.PositiveInfinity })]
         [TestCase(typeof(ProportionSettings), nameof(ProportionSettings.HmdTolerance), new[] { float.NaN, -0.01f, float.PositiveInfinity })]
+        [TestCase(typeof(PipelineSettings), nameof(PipelineSettings.ShrugReleaseSeconds), new[] { float.NaN, -1f, float.PositiveInfinity })]
+        [TestCase(typeof(PipelineSettings), nameof(PipelineSettings.SpineChordNoiseMetres), new[] { float.NaN, -0.001f, float.PositiveInfinity })]
+        [TestCase(typeof(PipelineSettings), nameof(PipelineSettings.SpineChordCutoffHz), new[] { float.NaN, -1f, float.PositiveInfinity })]
+        [TestCase(typeof(PipelineSettings), nameof(PipelineSettings.StraightLegCutoffHz), new[] { float.NaN, -1f, float.PositiveInfinity })]
+        [TestCase(typeof(PipelineSettings), nameof(PipelineSettings.StraightArmCutoffHz), new[] { float.NaN, -1f, float.NegativeInfinity })]
         public void TheCalibrationsNumbersAreCheckedWhereTheyAreSet(Type type, string name, float[] bad)
         {
             PropertyInfo p = type.GetProperty(name);
