@@ -37,8 +37,10 @@ namespace AvatarGo.Core
         /// <summary>True when this hand's fingers are solved on a controller (a profile is set and the rig has finger bones).</summary>
         public bool HasFingerIk { get; internal set; }
 
-        /// <summary>Why the hand has no finger IK, or null when it has.</summary>
-        public string NoFingerIkReason { get; internal set; }
+        /// <summary>Why the hand has no finger IK, or null when it has (before calibration and after a reset: not calibrated).</summary>
+        public string NoFingerIkReason { get; internal set; } = NotCalibrated;
+
+        internal const string NotCalibrated = "the pipeline is not calibrated";
 
         /// <summary>The fingers' joint parameters (the paper's t) applied to the pose this frame; all 0 without finger IK.</summary>
         public FingerParameters Fingers { get; } = new FingerParameters();

@@ -188,8 +188,19 @@ namespace AvatarGo.Core
             {
                 _hands[s] = null;
                 _fingers[s] = null;
-                _handStates[s].Solver = null;
-                _handStates[s].Fingers.Clear();
+                // The hand as before its first calibration: no fingers solved, nothing held or reached (the next calibration
+                // sets them up again; kept, they told a reader of the state of a grip no longer solved).
+                HandState state = _handStates[s];
+                state.Solver = null;
+                state.Fingers.Clear();
+                state.HasFingerIk = false;
+                state.NoFingerIkReason = HandState.NotCalibrated;
+                state.Holding = false;
+                state.Reached = false;
+                state.DistanceLeft = 0f;
+                state.ControllerTracked = false;
+                state.DrawnInHand = false;
+                state.Placement = HandPlacement.CalibratedOffset;
             }
         }
 

@@ -64,6 +64,45 @@ namespace AvatarGo.Core.Tests
             Assert.That(Vector3.Distance(pipeline.ActiveProfile.JointInDevice(DeviceRole.Head).Position, CalibrationProfile.FixedHeadOffset), Is.EqualTo(0f));
         }
 
+        /// <summary>
+        /// After a reset the hands say what they are: no finger IK (with why), not holding, not reached, nothing drawn in them,
+        /// until the next calibration sets them up again (found in review: HasFingerIk and Holding stayed true with the solver
+        /// gone, so a reader of the hand's state took fingers that were no longer solved for a grip).
+        /// </summary>
+        [Test]
+        public void AResetHandHasNoFingerIkNorGripUntilTheNextCalibration()
+        {
+            var wearer = new Wearer("mixamo_fingers_30fps.bvh", 12);
+            double t = 0;
+            var pipeline = new SelfAvatarPipeline(wearer.Devices, wearer.Map, WithController(Profile("vive-wand")));
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            Assume.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), pipeline.LastCalibrationStep.Message);
+            var samples = new DeviceSample[wearer.Devices.Length];
+            for (int i = 0; i < 10; i++)
+            {
+                wearer.Sample(samples, 0.001f, 0.1f);
+                t += 1.0 / 90;
+                pipeline.Update(t, samples, default, default, null);
+            }
+            HandState hand = pipeline.Hand(BodySide.Left);
+            Assume.That(hand.HasFingerIk, Is.True, hand.NoFingerIkReason);
+            Assume.That(hand.Holding, Is.True);
+
+            pipeline.Reset();
+            Assert.That(hand.HasFingerIk, Is.False);
+            Assert.That(hand.NoFingerIkReason, Is.Not.Null.And.Not.Empty);
+            Assert.That(hand.Holding, Is.False);
+            Assert.That(hand.Reached, Is.False);
+            Assert.That(hand.DrawnInHand, Is.False);
+            Assert.That(hand.ControllerTracked, Is.False);
+            Assert.That(hand.SurfaceGap(Finger.Index, FingerPoint.Tip), Is.NaN);
+
+            wearer.Calibrate(pipeline, RigidPose.Identity, ref t);
+            Assume.That(pipeline.State, Is.EqualTo(CalibrationState.Calibrated), pipeline.LastCalibrationStep.Message);
+            Assert.That(hand.HasFingerIk, Is.True, "set up again by the calibration");
+            Assert.That(hand.NoFingerIkReason, Is.Null);
+        }
+
         [Test]
         public void BothControllersPressingInTheSameFrameWithNoSecondPressEndsNotCalibrated()
         {
