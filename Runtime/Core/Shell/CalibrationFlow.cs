@@ -23,8 +23,20 @@ namespace AvatarGo.Core
         private string _stepMessage = string.Empty;
         private double _now;
 
-        /// <summary>How long (s) the confirmation stays up after calibrating or restoring (4 s).</summary>
-        public float ConfirmationSeconds { get; set; } = 4f;
+        /// <summary>The default of <see cref="ConfirmationSeconds"/> (s).</summary>
+        public const float DefaultConfirmationSeconds = 4f;
+
+        private float _confirmationSeconds = DefaultConfirmationSeconds;
+
+        /// <summary>
+        /// How long (s) the confirmation stays up after calibrating or restoring (4 s; NaN gives the default, a negative time
+        /// 0, infinity keeps it up for good).
+        /// </summary>
+        public float ConfirmationSeconds
+        {
+            get => _confirmationSeconds;
+            set => _confirmationSeconds = float.IsNaN(value) ? DefaultConfirmationSeconds : Math.Max(0f, value);
+        }
 
         /// <summary>Keep the mirror once calibrated (to look at oneself), not only during the walk-in.</summary>
         public bool KeepMirrorAfterCalibration { get; set; }

@@ -168,6 +168,26 @@ namespace AvatarGo.Core.Tests
             Assert.That(flow.Message, Is.Empty, "gone after its 4 s");
         }
 
+        /// <summary>
+        /// A confirmation time that is not a number (set from script) is the default 4 s, a negative one none (found in review:
+        /// NaN compared false with every elapsed time, so the confirmation was never shown).
+        /// </summary>
+        [Test]
+        public void AConfirmationTimeThatIsNotANumberIsTheDefault()
+        {
+            var flow = new CalibrationFlow { ConfirmationSeconds = float.NaN };
+            Assert.That(flow.ConfirmationSeconds, Is.EqualTo(4f));
+            var calibrated = new CalibrationStep(CalibrationState.Calibrated, CalibrationStepOutcome.Advanced, CalibrationError.None, "", null);
+            var waiting = new CalibrationStep(CalibrationState.Calibrated, CalibrationStepOutcome.Waiting, CalibrationError.None, "", null);
+            flow.Update(10.0, calibrated, CalibrationState.Calibrated);
+            flow.Update(11.0, waiting, CalibrationState.Calibrated);
+            Assert.That(flow.Message, Is.EqualTo(CalibrationFlow.CalibratedMessage), "1 s after calibrating");
+            flow.Update(14.1, waiting, CalibrationState.Calibrated);
+            Assert.That(flow.Message, Is.Empty, "gone after 4 s");
+            Assert.That(new CalibrationFlow { ConfirmationSeconds = -1f }.ConfirmationSeconds, Is.EqualTo(0f));
+            Assert.That(new CalibrationFlow { ConfirmationSeconds = float.PositiveInfinity }.ConfirmationSeconds, Is.EqualTo(float.PositiveInfinity), "shown for good");
+        }
+
         [Test]
         public void MessagesAreBrokenIntoLinesAtSpaces()
         {
