@@ -59,11 +59,24 @@ namespace AvatarGo.Core
             set => _seconds = float.IsNaN(value) || float.IsInfinity(value) ? DefaultExerciseSeconds : Math.Max(MinimumExerciseSeconds, Math.Min(MaximumExerciseSeconds, value));
         }
 
-        /// <summary>How long (s) after the start a trigger press does not end the exercise (2 s).</summary>
-        public float IgnorePressesSeconds { get; set; } = 2f;
+        private float _ignorePressesSeconds = 2f, _summarySeconds = 8f;
 
-        /// <summary>How long (s) the summary of what changed stays up after the exercise (8 s).</summary>
-        public float SummarySeconds { get; set; } = 8f;
+        /// <summary>How long (s) after the start a trigger press does not end the exercise (2 s; NaN gives the default, a negative time 0).</summary>
+        public float IgnorePressesSeconds
+        {
+            get => _ignorePressesSeconds;
+            set => _ignorePressesSeconds = float.IsNaN(value) ? 2f : Math.Max(0f, value);
+        }
+
+        /// <summary>
+        /// How long (s) the summary of what changed stays up after the exercise (8 s; NaN gives the default, a negative time 0,
+        /// infinity keeps it up until the next reset or calibration).
+        /// </summary>
+        public float SummarySeconds
+        {
+            get => _summarySeconds;
+            set => _summarySeconds = float.IsNaN(value) ? 8f : Math.Max(0f, value);
+        }
 
         /// <summary>Where the exercise is.</summary>
         public RefinementPhase Phase { get; private set; }

@@ -326,5 +326,19 @@ namespace AvatarGo.Core.Tests
             Assert.That(new RefinementFlow { ExerciseSeconds = float.NaN }.ExerciseSeconds, Is.EqualTo(RefinementFlow.DefaultExerciseSeconds));
             Assert.That(new RefinementFlow { ExerciseSeconds = 600f }.ExerciseSeconds, Is.EqualTo(RefinementFlow.MaximumExerciseSeconds));
         }
+
+        /// <summary>
+        /// The summary's and the ignored presses' times are numbers: NaN gives the defaults, a negative time none (found in
+        /// review: a NaN summary time was never up, so the summary stayed on the wearer's view for good).
+        /// </summary>
+        [Test]
+        public void TheSummaryAndIgnoredPressTimesAreNumbers()
+        {
+            Assert.That(new RefinementFlow { SummarySeconds = float.NaN }.SummarySeconds, Is.EqualTo(8f));
+            Assert.That(new RefinementFlow { SummarySeconds = -1f }.SummarySeconds, Is.EqualTo(0f));
+            Assert.That(new RefinementFlow { SummarySeconds = float.PositiveInfinity }.SummarySeconds, Is.EqualTo(float.PositiveInfinity), "kept for good");
+            Assert.That(new RefinementFlow { IgnorePressesSeconds = float.NaN }.IgnorePressesSeconds, Is.EqualTo(2f));
+            Assert.That(new RefinementFlow { IgnorePressesSeconds = -1f }.IgnorePressesSeconds, Is.EqualTo(0f));
+        }
 }
 }
