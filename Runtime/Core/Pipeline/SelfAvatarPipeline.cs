@@ -20,7 +20,9 @@ namespace AvatarGo.Core
     /// hands without finger IK). Where the arm cannot reach, the hand goes as far as it can and the virtual controller is
     /// drawn in the hand, in the same grip (<see cref="HandState.ControllerPose"/>), back at the tracked pose as soon as the
     /// hand reaches it again; the fingers close on the controller where it is drawn.</para>
-    /// <para>Per frame after calibration: nothing is allocated, nothing throws on bad samples (NaN, non-unit quaternions,
+    /// <para>Per frame after calibration: nothing is allocated (but in the frame a swap of devices is found and, with
+    /// <see cref="TrackingSettings.ReassignSwappedDevices"/>, reassigned: <see cref="SwapDevices"/> rebuilds the
+    /// per-calibration objects), nothing throws on bad samples (NaN, non-unit quaternions,
     /// lost tracking: the affected part keeps its last pose), the output is finite (a frame that would not be is replaced by
     /// the last good one), and nothing depends on the frame rate. Trigger presses after calibration are left to the
     /// application.</para>
@@ -125,7 +127,8 @@ namespace AvatarGo.Core
         /// Runs one frame. <paramref name="samples"/>: every device's sample, in <see cref="Devices"/> order.
         /// <paramref name="trigger"/> and <paramref name="grip"/>: each device's analog values 0..1 (NaN: not given), or empty
         /// spans when there are none. <paramref name="events"/>: this frame's trigger events, or null. Returns the
-        /// calibration's result for this frame. Allocation-free once calibrated.
+        /// calibration's result for this frame. Allocation-free once calibrated, but for the frame a swap of devices is
+        /// reassigned (<see cref="SwapDevices"/>).
         /// </summary>
         /// <exception cref="ArgumentException">A span's length is not the number of devices (a programming error, not bad data).</exception>
         public CalibrationStep Update(double time, ReadOnlySpan<DeviceSample> samples, ReadOnlySpan<float> trigger, ReadOnlySpan<float> grip, IReadOnlyList<DeviceEvent> events)
