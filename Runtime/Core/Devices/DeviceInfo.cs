@@ -16,7 +16,11 @@ namespace AvatarGo.Core
             RuntimeRole = runtimeRole;
         }
 
-        /// <summary>A stable id, unique within a session; indexes per-frame device arrays.</summary>
+        /// <summary>
+        /// A stable id, unique within a session: what trigger events (<see cref="DeviceEvent.DeviceId"/>) and the session
+        /// format name the device by. Not necessarily its index in the device list, which per-frame arrays follow
+        /// (<see cref="SessionHeader.IndexOf"/> finds it).
+        /// </summary>
         public int Id { get; }
 
         /// <summary>HMD, controller or tracker.</summary>
