@@ -111,7 +111,7 @@ namespace AvatarGo.Core
             get => _chordNoiseMetres;
             set
             {
-                _chordNoiseMetres = NonNegative(value, "The chord noise must be 0 or more metres.");
+                _chordNoiseMetres = SettingChecks.NotNegativeFinite(value, nameof(FullBodyIk), nameof(ChordNoiseMetres));
                 _flexStiffnessSquared = 2f * value * _chordCurvature;
             }
         }
@@ -141,7 +141,7 @@ namespace AvatarGo.Core
             get => _chordCutoffHz;
             set
             {
-                _chordCutoffHz = NonNegative(value, "The chord's cutoff must be 0 or more Hz.");
+                _chordCutoffHz = SettingChecks.NotNegativeFinite(value, nameof(FullBodyIk), nameof(ChordCutoffHz));
                 _headChord.Reset();
                 _neckChord.Reset();
             }
@@ -170,7 +170,7 @@ namespace AvatarGo.Core
             get => _straightLegCutoffHz;
             set
             {
-                _straightLegCutoffHz = NonNegative(value, "The straight leg's cutoff must be 0 or more Hz.");
+                _straightLegCutoffHz = SettingChecks.NotNegativeFinite(value, nameof(FullBodyIk), nameof(StraightLegCutoffHz));
                 _leftLegReach.Reset();
                 _rightLegReach.Reset();
             }
@@ -199,16 +199,13 @@ namespace AvatarGo.Core
             get => _straightArmCutoffHz;
             set
             {
-                _straightArmCutoffHz = NonNegative(value, "The straight arm's cutoff must be 0 or more Hz.");
+                _straightArmCutoffHz = SettingChecks.NotNegativeFinite(value, nameof(FullBodyIk), nameof(StraightArmCutoffHz));
                 _leftArmReach.Reset();
                 _rightArmReach.Reset();
             }
         }
 
         // A setting that is a non-negative finite number (0 turns its feature off); else the setter throws.
-        private static float NonNegative(float value, string message) =>
-            value >= 0f && !float.IsInfinity(value) ? value : throw new ArgumentOutOfRangeException(nameof(value), value, message);
-
         /// <summary>
         /// How far the neck follows the head's orientation (0: the neck lies where the evenly bent spine puts it;
         /// 1: the neck bone turns with the head): a nodding or tilted head carries the neck part of the way, as the
@@ -311,7 +308,7 @@ namespace AvatarGo.Core
             get => _shrugReleaseSeconds;
             set
             {
-                _shrugReleaseSeconds = NonNegative(value, "The shrug release time must be 0 or more seconds.");
+                _shrugReleaseSeconds = SettingChecks.NotNegativeFinite(value, nameof(FullBodyIk), nameof(ShrugReleaseSeconds));
                 if (value == 0f) _leftShoulder.Held = _rightShoulder.Held = Quaternion.Identity;
             }
         }

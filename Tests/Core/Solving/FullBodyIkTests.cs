@@ -560,6 +560,26 @@ namespace AvatarGo.Core.Tests
         }
 
         /// <summary>
+        /// The solver's tuning setters refuse a negative, NaN or infinite value with the setting's name as ParamName and in
+        /// the message (found in review: ParamName "value", as PipelineSettings' had), and keep the value they had.
+        /// </summary>
+        [TestCase(nameof(FullBodyIk.ChordNoiseMetres)), TestCase(nameof(FullBodyIk.ChordCutoffHz)), TestCase(nameof(FullBodyIk.StraightLegCutoffHz)),
+         TestCase(nameof(FullBodyIk.StraightArmCutoffHz)), TestCase(nameof(FullBodyIk.ShrugReleaseSeconds))]
+        public void ATuningValueRefusedNamesItsSetting(string name)
+        {
+            FullBodyIk ik = HangingArm(0.02f).ik;
+            System.Reflection.PropertyInfo p = typeof(FullBodyIk).GetProperty(name);
+            object before = p.GetValue(ik);
+            foreach (float bad in new[] { -1f, float.NaN, float.PositiveInfinity })
+            {
+                var e = Assert.Throws<System.Reflection.TargetInvocationException>(() => p.SetValue(ik, bad), $"{name} = {bad}");
+                Assert.That(((ArgumentOutOfRangeException)e.InnerException).ParamName, Is.EqualTo(name));
+                StringAssert.Contains("FullBodyIk." + name, e.InnerException.Message);
+            }
+            Assert.That(p.GetValue(ik), Is.EqualTo(before), "kept");
+        }
+
+        /// <summary>
         /// What is held is a continuous function of the goal: a hand just within the shrug's 20° is held whole, one a little
         /// beyond in part, one far beyond (10° past the range) not at all, with no jump in between (before: held whole up to
         /// 20° and not at all past it, so a goal micrometres either side of that line held 20° or nothing for seconds). The hand
