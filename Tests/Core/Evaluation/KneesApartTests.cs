@@ -15,10 +15,11 @@ namespace AvatarGo.Core.Tests
     {
         private static readonly HumanoidBone[] Knees = { HumanoidBone.LeftLowerLeg, HumanoidBone.RightLowerLeg };
 
-        // The shared clip evaluated with the default knee model and with the two planes added.
+        // The shipped copy of a shared clip (Tests/Core/Data~, so that CI runs it too), evaluated with the default knee model
+        // and with the two planes added.
         private static (EvaluationReport outer, EvaluationReport added) BothModels(string file)
         {
-            BvhClip clip = RestConventionTests.Read(TestData.SharedMocap(file));
+            BvhClip clip = RestConventionTests.Read(TestData.Mocap(file));
             EvaluationReport outer = RestConventionTests.Evaluate(clip, 1, false);
             EvaluationReport added = RestConventionTests.Evaluate(clip, 1, false, KneeHintModel.PelvisAndFoot);
             Assert.That(outer.Profile, Is.Not.Null, outer.CalibrationMessage);
