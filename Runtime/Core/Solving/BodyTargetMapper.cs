@@ -204,6 +204,7 @@ namespace AvatarGo.Core
                     break;
                 case KneeHintModel.AnkleHinge: direction = AnkleHinge(hip, target.Goal, axis, pelvis, s); break;
                 case KneeHintModel.PelvisAndFoot: direction = pelvis + foot; break;
+                case KneeHintModel.OuterOfPelvisAndFoot:
                 default: direction = OuterOf(pelvis, foot, side == BodySide.Left ? -hipLine : hipLine); break;
             }
             // A leg along the hip line (the splits) with the toes along it too: the body's forward.
