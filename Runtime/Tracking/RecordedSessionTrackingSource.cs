@@ -140,7 +140,8 @@ namespace AvatarGo
 
         /// <summary>
         /// Stepped mode: the next <see cref="Read"/> delivers the next recorded frame. Returns false when there is none left
-        /// (the last frame stays) or nothing is loaded.
+        /// (the last frame stays) or nothing is loaded. Steps do not add up: a second call before that read asks for the
+        /// same frame (one step per application frame, e.g. <c>Step(); yield return null;</c> in a play-mode test).
         /// </summary>
         public bool Step()
         {
